@@ -1,0 +1,72 @@
+// Loads and supports of a scene as functions of (x, y, z, t): prescribed
+// displacements (Dirichlet, with a component mask), dead-load tractions per
+// unit reference area and body forces per unit reference volume.
+#pragma once
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <hyperelastic/parameters.h>
+
+#include <memory>
+#include <set>
+#include <vector>
+
+namespace hyperelastic
+{
+  using dealii::types::boundary_id;
+
+  template <int dim>
+  struct DirichletBoundary
+  {
+    boundary_id                              id;
+    dealii::ComponentMask                    mask;
+    std::unique_ptr<dealii::Function<dim>>   displacement; ///< dim components
+    std::string                              subsection;
+  };
+
+  template <int dim>
+  struct TractionBoundary
+  {
+    boundary_id                            id;
+    std::unique_ptr<dealii::Function<dim>> traction;
+  };
+
+  template <int dim>
+  struct BoundaryConditions
+  {
+    std::vector<DirichletBoundary<dim>>    dirichlet;
+    std::vector<TractionBoundary<dim>>     tractions;
+    std::unique_ptr<dealii::Function<dim>> body_force; ///< null: none
+
+    /// Parses every expression and checks that each named boundary id exists
+    /// in @p mesh_ids. Throws InputError naming the entry.
+    BoundaryConditions(const LoadingParameters &           loading,
+                       const std::set<boundary_id> &mesh_ids);
+
+    /// Constraints u = g(x, t) - @p current on the Dirichlet dofs (the
+    /// increment that takes the current displacement to the prescribed one),
+    /// or homogeneous ones if @p homogeneous.
+    void
+    make_constraints(const dealii::Mapping<dim> &                mapping,
+                     const dealii::DoFHandler<dim> &             dof_handler,
+                     const dealii::IndexSet &                    relevant_dofs,
+                     const double                                t,
+                     const dealii::TrilinosWrappers::MPI::Vector &current_ghosted,
+                     const bool                                  homogeneous,
+                     dealii::AffineConstraints<double> &         constraints) const;
+  };
+
+  /// A vector-valued function of (x, y, (z,) t) from dim expressions.
+  /// Throws InputError naming @p entry if an expression does not parse.
+  template <int dim>
+  std::unique_ptr<dealii::Function<dim>>
+  parse_vector_function(const std::vector<std::string> &     expressions,
+                        const std::map<std::string, double> &constants,
+                        const std::string &                  entry);
+} // namespace hyperelastic

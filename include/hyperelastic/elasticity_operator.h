@@ -1,0 +1,87 @@
+// The discrete hyperelastic problem: for a displacement field u it computes the
+// total potential energy, the internal and external nodal forces and the
+// tangent stiffness. The internal force of node a is the integral of
+// P(F) grad N_a over the reference cell (for P1: |T| P Dm^-T, the negative of
+// the nodal force acting on the node); the tangent is its exact derivative
+// through dP/dF. All loads are dead loads referred to the reference
+// configuration.
+#pragma once
+
+#include <deal.II/base/quadrature.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <hyperelastic/boundary_conditions.h>
+#include <hyperelastic/materials/material.h>
+
+namespace hyperelastic
+{
+  using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+  using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
+
+  /// Cell-wise derived quantities of a displacement field, for output. For
+  /// P1 they are exact; for higher degrees they are cell averages.
+  struct CellFields
+  {
+    dealii::Vector<double> J;
+    dealii::Vector<double> energy_density;
+    dealii::Vector<double> von_mises;
+    /// Cauchy stress components xx, yy, zz, xy, xz, yz (zz from plane strain
+    /// in 2D; xz and yz are zero there).
+    std::array<dealii::Vector<double>, 6> cauchy;
+  };
+
+  template <int dim>
+  class ElasticityOperator
+  {
+  public:
+    ElasticityOperator(const dealii::DoFHandler<dim> &  dof_handler,
+                       const dealii::Mapping<dim> &     mapping,
+                       const Material<dim> &            material,
+                       const BoundaryConditions<dim> &  boundary_conditions);
+
+    /// Internal forces f_int(u) and external forces f_ext(t), unconstrained
+    /// (both compressed, owned entries only). u must have ghost entries.
+    void
+    assemble_forces(const VectorType &u, const double t, VectorType &internal,
+                    VectorType &external) const;
+
+    /// Tangent K = d f_int / du and right-hand side -(f_int - f_ext),
+    /// condensed with @p constraints (whose inhomogeneities are imposed).
+    void
+    assemble_system(const VectorType &                       u,
+                    const double                             t,
+                    const dealii::AffineConstraints<double> &constraints,
+                    MatrixType &                             matrix,
+                    VectorType &                             rhs) const;
+
+    /// Total potential energy: stored energy minus the work of the loads.
+    double
+    total_energy(const VectorType &u, const double t) const;
+
+    /// J, energy density and Cauchy stress per locally owned cell; also the
+    /// smallest J over the whole mesh (collective).
+    CellFields
+    cell_fields(const VectorType &u, double &min_J) const;
+
+  private:
+    template <typename CellWorker>
+    void
+    for_each_cell(const VectorType &u, CellWorker &&worker) const;
+
+    const dealii::DoFHandler<dim> &dof_handler;
+    const dealii::Mapping<dim> &   mapping;
+    const Material<dim> &          material;
+    const BoundaryConditions<dim> &boundary_conditions;
+    /// Quadrature for the stress terms: exact for P1 (one point) and for the
+    /// linear-elastic stiffness of P2.
+    const dealii::Quadrature<dim> stress_quadrature;
+    /// Quadrature for body forces and tractions (one degree higher).
+    const dealii::Quadrature<dim>     load_quadrature;
+    const dealii::Quadrature<dim - 1> face_quadrature;
+  };
+} // namespace hyperelastic

@@ -1,0 +1,71 @@
+// What a run writes: per load step one .vtu per rank plus a .pvtu, a .pvd for
+// the whole series (open it in ParaView), and a CSV summary with one row per
+// converged load step.
+#pragma once
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <hyperelastic/elasticity_operator.h>
+#include <hyperelastic/parameters.h>
+
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hyperelastic
+{
+  /// The summary of one converged load step (one CSV row).
+  template <int dim>
+  struct StepSummary
+  {
+    unsigned int step              = 0;
+    double       load_factor       = 0.;
+    unsigned int newton_iterations = 0;
+    unsigned int linear_iterations = 0;
+    double       residual          = 0.;
+    double       energy            = 0.;
+    double       min_J             = 0.;
+    /// Force the supports exert on the body, per Dirichlet boundary id
+    /// (all components; the free ones are zero to solver tolerance).
+    std::vector<std::pair<dealii::types::boundary_id, dealii::Tensor<1, dim>>>
+                           reactions;
+    dealii::Tensor<1, dim> deformed_min; ///< bounding box of x = X + u
+    dealii::Tensor<1, dim> deformed_max;
+  };
+
+  template <int dim>
+  class OutputWriter
+  {
+  public:
+    /// Creates the output folder (collective; InputError if impossible).
+    OutputWriter(const OutputParameters &parameters, MPI_Comm comm);
+
+    /// Writes <base>_<step>.<rank>.vtu, <base>_<step>.pvtu and rewrites
+    /// <base>.pvd. @p u must have ghost entries.
+    void
+    write_fields(unsigned int                                 step,
+                 double                                       load_factor,
+                 const dealii::DoFHandler<dim> &              dof_handler,
+                 const dealii::Mapping<dim> &                 mapping,
+                 const dealii::TrilinosWrappers::MPI::Vector &u,
+                 const CellFields &                           fields);
+
+    /// Appends one row to <base>.csv (rank 0 writes).
+    void
+    write_summary(const StepSummary<dim> &summary);
+
+    std::string
+    csv_file() const;
+
+  private:
+    const OutputParameters                   parameters;
+    const MPI_Comm                           comm;
+    std::vector<std::pair<double, std::string>> pvd_entries;
+    std::ofstream                            csv;
+  };
+} // namespace hyperelastic

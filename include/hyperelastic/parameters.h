@@ -1,0 +1,154 @@
+// The scene: every parameter a .prm file can set, one struct per subsection.
+// Each struct declares its entries (with pattern, default and documentation)
+// and parses them, rejecting invalid values with a message naming the entry.
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+
+#include <hyperelastic/materials/material.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace hyperelastic
+{
+  using dealii::ParameterHandler;
+
+  struct ProblemParameters
+  {
+    unsigned int dimension = 3;
+    unsigned int fe_degree = 1;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  enum class MeshSource
+  {
+    box,
+    file
+  };
+
+  struct MeshParameters
+  {
+    MeshSource                source = MeshSource::box;
+    std::string               file; ///< resolved against the scene's folder
+    std::vector<double>       lower_corner;
+    std::vector<double>       upper_corner;
+    std::vector<unsigned int> subdivisions;
+    unsigned int              global_refinements = 0;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm, const std::string &scene_folder);
+  };
+
+  struct MaterialParameters
+  {
+    std::string    model;
+    LameParameters lame;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /// A displacement prescribed on one boundary id for some components.
+  struct DirichletCondition
+  {
+    dealii::types::boundary_id boundary_id = 0;
+    std::vector<unsigned int>  components;  ///< 0 = x, 1 = y, 2 = z
+    std::vector<std::string>   expressions; ///< one per entry of components
+    std::string                subsection;  ///< for error messages
+  };
+
+  /// A traction (force per unit reference area) on one boundary id.
+  struct TractionCondition
+  {
+    dealii::types::boundary_id boundary_id = 0;
+    std::vector<std::string>   expressions; ///< one per space dimension
+    std::string                subsection;
+  };
+
+  struct LoadingParameters
+  {
+    unsigned int                  n_load_steps = 1;
+    std::vector<std::string>      body_force; ///< empty: no body force
+    std::map<std::string, double> constants;
+    std::vector<DirichletCondition> dirichlet;
+    std::vector<TractionCondition>  tractions;
+
+    static constexpr unsigned int max_dirichlet = 8;
+    static constexpr unsigned int max_tractions = 4;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  struct NewtonParameters
+  {
+    unsigned int max_iterations              = 20;
+    double       absolute_residual_tolerance = 1e-12;
+    double       relative_residual_tolerance = 1e-10;
+    double       update_tolerance            = 1e-8;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  enum class LinearSolverType
+  {
+    cg_amg,
+    direct
+  };
+
+  struct LinearSolverParameters
+  {
+    LinearSolverType type               = LinearSolverType::cg_amg;
+    double           relative_tolerance = 1e-8;
+    unsigned int     max_iterations     = 1000;
+    std::string      direct_solver      = "Amesos_Klu";
+    double           aggregation_threshold = 1e-4;
+    unsigned int     smoother_sweeps       = 2;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  struct OutputParameters
+  {
+    std::string directory = "output";
+    std::string base_name = "solution";
+    bool        write_vtu = true;
+    bool        verbose   = true;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /// All subsections of a scene.
+  struct Parameters
+  {
+    ProblemParameters      problem;
+    MeshParameters         mesh;
+    MaterialParameters     material;
+    LoadingParameters      loading;
+    NewtonParameters       newton;
+    LinearSolverParameters linear_solver;
+    OutputParameters       output;
+
+    static void declare(ParameterHandler &prm);
+
+    /// Read a scene file. Throws InputError naming the file and entry.
+    void read(const std::string &scene_file);
+
+    /// Parse a scene given as text (for tests); relative paths are resolved
+    /// against @p scene_folder.
+    void read_from_string(const std::string &text,
+                          const std::string &scene_folder = ".",
+                          const std::string &scene_name   = "scene");
+
+  private:
+    void parse(ParameterHandler &prm, const std::string &scene_folder);
+  };
+} // namespace hyperelastic

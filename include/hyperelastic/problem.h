@@ -1,0 +1,117 @@
+// A scene run end to end: mesh, dofs, material and loads from the parameters,
+// then for each load step a Newton solve, post-processing and output. This
+// class is the NonlinearSystem that the Newton solver drives.
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <hyperelastic/boundary_conditions.h>
+#include <hyperelastic/elasticity_operator.h>
+#include <hyperelastic/linear_solver.h>
+#include <hyperelastic/materials/material.h>
+#include <hyperelastic/newton_solver.h>
+#include <hyperelastic/output.h>
+#include <hyperelastic/parameters.h>
+
+#include <memory>
+#include <vector>
+
+namespace hyperelastic
+{
+  template <int dim>
+  class Problem : public NonlinearSystem
+  {
+  public:
+    /// @p print: whether rank 0 prints progress (tests may switch it off).
+    Problem(const Parameters &parameters, MPI_Comm comm, bool print = true);
+
+    /// Runs all load steps. Throws InputError or ConvergenceFailure.
+    void
+    run();
+
+    /// One entry per converged load step.
+    const std::vector<StepSummary<dim>> &
+    summaries() const
+    {
+      return step_summaries;
+    }
+
+    const dealii::DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    /// The displacement with ghost entries.
+    const VectorType &
+    solution() const
+    {
+      return u_ghosted;
+    }
+
+    // NonlinearSystem
+    void
+    assemble_linearization(bool impose_constraint_increment) override;
+    unsigned int
+    solve_linearization() override;
+    double
+    apply_update() override;
+    ResidualNorms
+    residual_norms() override;
+    double
+    solution_norm() const override;
+
+  private:
+    void
+    setup();
+    StepSummary<dim>
+    summarize(unsigned int step, const NewtonResult &newton_result);
+    void
+    write_fields(unsigned int step);
+
+    const Parameters           parameters;
+    const MPI_Comm             comm;
+    dealii::ConditionalOStream pcout;
+    dealii::TimerOutput        timer;
+
+    dealii::parallel::fullydistributed::Triangulation<dim> triangulation;
+    const dealii::FESystem<dim>                            fe;
+    const dealii::MappingFE<dim>                           mapping;
+    dealii::DoFHandler<dim>                                dof_handler;
+    dealii::IndexSet                                       owned_dofs;
+    dealii::IndexSet                                       relevant_dofs;
+
+    std::unique_ptr<Material<dim>>           material;
+    std::unique_ptr<BoundaryConditions<dim>> boundary_conditions;
+    std::unique_ptr<ElasticityOperator<dim>> elasticity;
+    std::unique_ptr<OutputWriter<dim>>       writer;
+    LinearSolver                             linear_solver;
+    NewtonSolver                             newton;
+
+    /// Constraints of the current linearization and their homogeneous twin.
+    dealii::AffineConstraints<double> constraints;
+    dealii::AffineConstraints<double> homogeneous_constraints;
+
+    /// Owned dofs on each Dirichlet boundary (for the reactions), with their
+    /// vector component.
+    std::vector<std::vector<std::pair<dealii::types::global_dof_index, unsigned int>>>
+      reaction_dofs;
+
+    MatrixType tangent;
+    VectorType u, u_ghosted, update, rhs;
+    VectorType internal_force, external_force, residual;
+    double     load_factor = 0.;
+
+    std::vector<StepSummary<dim>> step_summaries;
+  };
+
+  /// Reads the dimension from the parameters and runs the scene.
+  void
+  run_scene(const Parameters &parameters, MPI_Comm comm);
+} // namespace hyperelastic

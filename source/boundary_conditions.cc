@@ -1,0 +1,143 @@
+// Parsing of load and support expressions and the Dirichlet constraints.
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <hyperelastic/boundary_conditions.h>
+#include <hyperelastic/error_handling.h>
+
+namespace hyperelastic
+{
+  using namespace dealii;
+
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  parse_vector_function(const std::vector<std::string> &     expressions,
+                        const std::map<std::string, double> &constants,
+                        const std::string &                  entry)
+  {
+    std::map<std::string, double> all_constants = constants;
+    all_constants.emplace("pi", numbers::PI);
+    const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
+
+    auto function = std::make_unique<FunctionParser<dim>>(dim);
+    try
+      {
+        function->initialize(variables, expressions, all_constants, true);
+        // muParser compiles lazily: evaluate once so that errors show now.
+        Vector<double> value(dim);
+        function->vector_value(Point<dim>(), value);
+      }
+    catch (const std::exception &e)
+      {
+        std::string joined;
+        for (const auto &x : expressions)
+          joined += (joined.empty() ? "" : "; ") + x;
+        throw InputError("scene entry '" + entry + "' = '" + joined +
+                         "': cannot parse the expression (variables are " +
+                         variables + " and the Loading/Constants): " +
+                         exception_message(e));
+      }
+    return function;
+  }
+
+  namespace
+  {
+    std::string
+    list_ids(const std::set<boundary_id> &ids)
+    {
+      std::string s;
+      for (const auto id : ids)
+        s += (s.empty() ? "" : ", ") + std::to_string(id);
+      return s.empty() ? "none" : s;
+    }
+  } // namespace
+
+  template <int dim>
+  BoundaryConditions<dim>::BoundaryConditions(
+    const LoadingParameters &    loading,
+    const std::set<boundary_id> &mesh_ids)
+  {
+    const auto check_id = [&](const boundary_id id, const std::string &section) {
+      if (mesh_ids.count(id) == 0)
+        throw InputError("scene entry '" + section + "/Boundary id' = " +
+                         std::to_string(id) +
+                         ": the mesh has no boundary with this id; its boundary "
+                         "ids are " + list_ids(mesh_ids));
+    };
+
+    for (const auto &c : loading.dirichlet)
+      {
+        check_id(c.boundary_id, c.subsection);
+        std::vector<std::string> expressions(dim, "0");
+        std::vector<bool>        mask(dim, false);
+        for (unsigned int i = 0; i < c.components.size(); ++i)
+          {
+            expressions[c.components[i]] = c.expressions[i];
+            mask[c.components[i]]        = true;
+          }
+        dirichlet.push_back(
+          {c.boundary_id, ComponentMask(mask),
+           parse_vector_function<dim>(expressions, loading.constants,
+                                      c.subsection + "/Displacement"),
+           c.subsection});
+      }
+    for (const auto &c : loading.tractions)
+      {
+        check_id(c.boundary_id, c.subsection);
+        tractions.push_back({c.boundary_id,
+                             parse_vector_function<dim>(c.expressions,
+                                                        loading.constants,
+                                                        c.subsection + "/Traction")});
+      }
+    if (!loading.body_force.empty())
+      body_force = parse_vector_function<dim>(loading.body_force,
+                                              loading.constants,
+                                              "Loading/Body force");
+  }
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::make_constraints(
+    const Mapping<dim> &                              mapping,
+    const DoFHandler<dim> &                           dof_handler,
+    const IndexSet &                                  relevant_dofs,
+    const double                                      t,
+    const TrilinosWrappers::MPI::Vector &              current_ghosted,
+    const bool                                        homogeneous,
+    AffineConstraints<double> &                       constraints) const
+  {
+    constraints.clear();
+    constraints.reinit(relevant_dofs);
+    for (const auto &d : dirichlet)
+      {
+        std::map<types::global_dof_index, double> values;
+        d.displacement->set_time(t);
+        VectorTools::interpolate_boundary_values(
+          mapping, dof_handler, std::map<types::boundary_id, const Function<dim> *>{
+                                  {d.id, d.displacement.get()}},
+          values, d.mask);
+        for (const auto &[dof, value] : values)
+          if (!constraints.is_constrained(dof))
+            {
+              constraints.add_line(dof);
+              if (!homogeneous)
+                {
+                constraints.set_inhomogeneity(dof, value - current_ghosted(dof));
+                }
+            }
+      }
+    constraints.close();
+  }
+
+  template struct BoundaryConditions<2>;
+  template struct BoundaryConditions<3>;
+  template std::unique_ptr<Function<2>>
+  parse_vector_function<2>(const std::vector<std::string> &,
+                           const std::map<std::string, double> &,
+                           const std::string &);
+  template std::unique_ptr<Function<3>>
+  parse_vector_function<3>(const std::vector<std::string> &,
+                           const std::map<std::string, double> &,
+                           const std::string &);
+} // namespace hyperelastic

@@ -1,0 +1,329 @@
+// Assembly of forces, tangent and energy with the generic FEValues path (any
+// degree). Loads are integrated only when the scene defines them.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/fe_values_extractors.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <hyperelastic/elasticity_operator.h>
+
+#include <cmath>
+
+namespace hyperelastic
+{
+  using namespace dealii;
+
+  template <int dim>
+  ElasticityOperator<dim>::ElasticityOperator(
+    const DoFHandler<dim> &        dof_handler,
+    const Mapping<dim> &           mapping,
+    const Material<dim> &          material,
+    const BoundaryConditions<dim> &boundary_conditions)
+    : dof_handler(dof_handler)
+    , mapping(mapping)
+    , material(material)
+    , boundary_conditions(boundary_conditions)
+    , stress_quadrature(QGaussSimplex<dim>(dof_handler.get_fe().degree))
+    , load_quadrature(QGaussSimplex<dim>(dof_handler.get_fe().degree + 1))
+    , face_quadrature(QGaussSimplex<dim - 1>(dof_handler.get_fe().degree + 1))
+  {}
+
+  namespace
+  {
+    /// Per-cell data shared by all assembly loops.
+    template <int dim>
+    struct CellData
+    {
+      CellData(const Mapping<dim> &      mapping,
+               const FiniteElement<dim> &fe,
+               const Quadrature<dim> &   stress_quadrature,
+               const Quadrature<dim> &   load_quadrature,
+               const Quadrature<dim - 1> &face_quadrature)
+        : stress_values(mapping, fe, stress_quadrature,
+                        update_gradients | update_JxW_values)
+        , load_values(mapping, fe, load_quadrature,
+                      update_values | update_quadrature_points |
+                        update_JxW_values)
+        , face_values(mapping, fe, face_quadrature,
+                      update_values | update_quadrature_points |
+                        update_JxW_values)
+        , dofs(fe.dofs_per_cell)
+        , u(fe.dofs_per_cell)
+        , F(stress_quadrature.size())
+      {}
+
+      FEValues<dim>                        stress_values;
+      FEValues<dim>                        load_values;
+      FEFaceValues<dim>                    face_values;
+      std::vector<types::global_dof_index> dofs;
+      Vector<double>                       u;
+      std::vector<Tensor<2, dim>>          F;
+    };
+
+    /// F = I + grad u at the quadrature points of stress_values.
+    template <int dim>
+    void
+    compute_deformation_gradients(CellData<dim> &data)
+    {
+      const FEValuesExtractors::Vector displacement(0);
+      const FEValues<dim> &            fe_values = data.stress_values;
+      for (unsigned int q = 0; q < data.F.size(); ++q)
+        {
+          Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+          for (unsigned int i = 0; i < data.u.size(); ++i)
+            F += data.u[i] * fe_values[displacement].gradient(i, q);
+          data.F[q] = F;
+        }
+    }
+
+    /// Adds the body force and traction contributions (force vectors and
+    /// their work on u) of one cell.
+    template <int dim>
+    void
+    add_loads(CellData<dim> &                                       data,
+              const typename DoFHandler<dim>::active_cell_iterator &cell,
+              const BoundaryConditions<dim> &                       bc,
+              const double                                          t,
+              Vector<double> *                                      external,
+              double *                                              work)
+    {
+      const FiniteElement<dim> &fe = cell->get_fe();
+      Vector<double>            value(dim);
+      if (bc.body_force)
+        {
+          bc.body_force->set_time(t);
+          data.load_values.reinit(cell);
+          for (unsigned int q = 0; q < data.load_values.n_quadrature_points; ++q)
+            {
+              bc.body_force->vector_value(data.load_values.quadrature_point(q),
+                                          value);
+              const double JxW = data.load_values.JxW(q);
+              for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
+                {
+                  const unsigned int c = fe.system_to_component_index(i).first;
+                  const double f = value[c] * data.load_values.shape_value(i, q) * JxW;
+                  if (external)
+                    (*external)[i] += f;
+                  if (work)
+                    *work += f * data.u[i];
+                }
+            }
+        }
+      if (bc.tractions.empty() || !cell->at_boundary())
+        return;
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          for (const auto &traction : bc.tractions)
+            if (cell->face(f)->boundary_id() == traction.id)
+              {
+                traction.traction->set_time(t);
+                data.face_values.reinit(cell, f);
+                for (unsigned int q = 0; q < data.face_values.n_quadrature_points; ++q)
+                  {
+                    traction.traction->vector_value(
+                      data.face_values.quadrature_point(q), value);
+                    const double JxW = data.face_values.JxW(q);
+                    for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
+                      {
+                        const unsigned int c = fe.system_to_component_index(i).first;
+                        const double       force =
+                          value[c] * data.face_values.shape_value(i, q) * JxW;
+                        if (external)
+                          (*external)[i] += force;
+                        if (work)
+                          *work += force * data.u[i];
+                      }
+                  }
+              }
+    }
+  } // namespace
+
+  template <int dim>
+  template <typename CellWorker>
+  void
+  ElasticityOperator<dim>::for_each_cell(const VectorType &u,
+                                         CellWorker &&     worker) const
+  {
+    CellData<dim> data(mapping, dof_handler.get_fe(), stress_quadrature,
+                       load_quadrature, face_quadrature);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(data.dofs);
+          cell->get_dof_values(u, data.u);
+          data.stress_values.reinit(cell);
+          compute_deformation_gradients(data);
+          worker(cell, data);
+        }
+  }
+
+  template <int dim>
+  void
+  ElasticityOperator<dim>::assemble_forces(const VectorType &u, const double t,
+                                           VectorType &internal,
+                                           VectorType &external) const
+  {
+    internal = 0.;
+    external = 0.;
+    const FiniteElement<dim> &fe = dof_handler.get_fe();
+    Vector<double>            cell_internal(fe.dofs_per_cell);
+    Vector<double>            cell_external(fe.dofs_per_cell);
+    for_each_cell(u, [&](const auto &cell, CellData<dim> &data) {
+      cell_internal = 0.;
+      cell_external = 0.;
+      const FEValues<dim> &fe_values = data.stress_values;
+      for (unsigned int q = 0; q < data.F.size(); ++q)
+        {
+          const Tensor<2, dim> P   = material.first_piola_kirchhoff(data.F[q]);
+          const double         JxW = fe_values.JxW(q);
+          for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
+            {
+              const unsigned int c = fe.system_to_component_index(i).first;
+              cell_internal[i] += (P[c] * fe_values.shape_grad_component(i, q, c)) * JxW;
+            }
+        }
+      add_loads(data, cell, boundary_conditions, t, &cell_external, nullptr);
+      internal.add(data.dofs, cell_internal);
+      external.add(data.dofs, cell_external);
+    });
+    internal.compress(VectorOperation::add);
+    external.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  ElasticityOperator<dim>::assemble_system(
+    const VectorType &               u,
+    const double                     t,
+    const AffineConstraints<double> &constraints,
+    MatrixType &                     matrix,
+    VectorType &                     rhs) const
+  {
+    matrix = 0.;
+    rhs    = 0.;
+    const FiniteElement<dim> &fe = dof_handler.get_fe();
+    const unsigned int        n  = fe.dofs_per_cell;
+    FullMatrix<double>        cell_matrix(n, n);
+    Vector<double>            cell_rhs(n);
+    Vector<double>            cell_external(n);
+    std::vector<unsigned int> component(n);
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = fe.system_to_component_index(i).first;
+    std::vector<Tensor<1, dim>> grad(n);
+    Tensor<2, dim>              P;
+    StressTangent<dim>          A;
+
+    for_each_cell(u, [&](const auto &cell, CellData<dim> &data) {
+      cell_matrix = 0.;
+      cell_rhs    = 0.;
+      const FEValues<dim> &fe_values = data.stress_values;
+      for (unsigned int q = 0; q < data.F.size(); ++q)
+        {
+          material.stress_and_tangent(data.F[q], P, A);
+          const double JxW = fe_values.JxW(q);
+          for (unsigned int i = 0; i < n; ++i)
+            grad[i] = fe_values.shape_grad_component(i, q, component[i]);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              cell_rhs[i] -= (P[component[i]] * grad[i]) * JxW;
+              // A[ci][J][cj][L] grad_i[J] grad_j[L]
+              const Tensor<3, dim> &A_i = A[component[i]];
+              for (unsigned int j = 0; j < n; ++j)
+                {
+                  double k = 0.;
+                  for (unsigned int J = 0; J < dim; ++J)
+                    k += grad[i][J] * (A_i[J][component[j]] * grad[j]);
+                  cell_matrix(i, j) += k * JxW;
+                }
+            }
+        }
+      cell_external = 0.;
+      add_loads(data, cell, boundary_conditions, t, &cell_external, nullptr);
+      cell_rhs += cell_external;
+      constraints.distribute_local_to_global(cell_matrix, cell_rhs, data.dofs,
+                                             matrix, rhs, true);
+    });
+    matrix.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  double
+  ElasticityOperator<dim>::total_energy(const VectorType &u, const double t) const
+  {
+    double energy = 0.;
+    for_each_cell(u, [&](const auto &cell, CellData<dim> &data) {
+      for (unsigned int q = 0; q < data.F.size(); ++q)
+        energy += material.energy_density(data.F[q]) * data.stress_values.JxW(q);
+      double work = 0.;
+      add_loads(data, cell, boundary_conditions, t, nullptr, &work);
+      energy -= work;
+    });
+    return Utilities::MPI::sum(energy, dof_handler.get_communicator());
+  }
+
+  namespace
+  {
+    /// Cauchy stress sigma = P F^T / J as a full 3x3 tensor; in 2D the
+    /// plane-strain out-of-plane stress comes from the 3D model at F33 = 1.
+    Tensor<2, 3>
+    cauchy_stress_3d(const Material<3> &material3d, const Tensor<2, 3> &F)
+    {
+      return material3d.first_piola_kirchhoff(F) * transpose(F) / determinant(F);
+    }
+  } // namespace
+
+  template <int dim>
+  CellFields
+  ElasticityOperator<dim>::cell_fields(const VectorType &u, double &min_J) const
+  {
+    const auto material3d =
+      create_material<3>(material.name(), material.parameters());
+    const unsigned int n_cells =
+      dof_handler.get_triangulation().n_active_cells();
+    CellFields fields;
+    fields.J.reinit(n_cells);
+    fields.energy_density.reinit(n_cells);
+    fields.von_mises.reinit(n_cells);
+    for (auto &c : fields.cauchy)
+      c.reinit(n_cells);
+
+    min_J = std::numeric_limits<double>::max();
+    for_each_cell(u, [&](const auto &cell, CellData<dim> &data) {
+      const unsigned int index = cell->active_cell_index();
+      double             volume = 0.;
+      Tensor<2, 3>       sigma;
+      for (unsigned int q = 0; q < data.F.size(); ++q)
+        {
+          const double JxW = data.stress_values.JxW(q);
+          Tensor<2, 3> F3  = unit_symmetric_tensor<3>();
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              F3[i][j] = data.F[q][i][j];
+          const double J = determinant(data.F[q]);
+          min_J          = std::min(min_J, J);
+          fields.J[index] += J * JxW;
+          fields.energy_density[index] +=
+            material.energy_density(data.F[q]) * JxW;
+          sigma += cauchy_stress_3d(*material3d, F3) * JxW;
+          volume += JxW;
+        }
+      fields.J[index] /= volume;
+      fields.energy_density[index] /= volume;
+      sigma /= volume;
+      const unsigned int pairs[6][2] = {{0, 0}, {1, 1}, {2, 2},
+                                        {0, 1}, {0, 2}, {1, 2}};
+      for (unsigned int c = 0; c < 6; ++c)
+        fields.cauchy[c][index] = sigma[pairs[c][0]][pairs[c][1]];
+      const Tensor<2, 3> dev =
+        sigma - trace(sigma) / 3. * Tensor<2, 3>(unit_symmetric_tensor<3>());
+      fields.von_mises[index] = std::sqrt(1.5 * scalar_product(dev, dev));
+    });
+    min_J = Utilities::MPI::min(min_J, dof_handler.get_communicator());
+    return fields;
+  }
+
+  template class ElasticityOperator<2>;
+  template class ElasticityOperator<3>;
+} // namespace hyperelastic

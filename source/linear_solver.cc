@@ -1,0 +1,92 @@
+// CG + ML AMG and direct solves; ML is configured through a Teuchos list
+// because deal.II 9.4 cannot pass rotational modes through AdditionalData.
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <hyperelastic/error_handling.h>
+#include <hyperelastic/linear_solver.h>
+
+#include <Teuchos_ParameterList.hpp>
+
+namespace hyperelastic
+{
+  using namespace dealii;
+
+  LinearSolver::LinearSolver(const LinearSolverParameters &parameters)
+    : parameters(parameters)
+  {}
+
+  void
+  LinearSolver::set_near_null_space(std::vector<double> modes,
+                                    const unsigned int  n_modes,
+                                    const unsigned int  n_components)
+  {
+    null_space         = std::move(modes);
+    this->n_modes      = n_modes;
+    this->n_components = n_components;
+  }
+
+  unsigned int
+  LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
+                      TrilinosWrappers::MPI::Vector &       x,
+                      const TrilinosWrappers::MPI::Vector & b)
+  {
+    if (parameters.type == LinearSolverType::direct)
+      {
+        SolverControl control(1, 0);
+        TrilinosWrappers::SolverDirect::AdditionalData data(
+          false, parameters.direct_solver);
+        TrilinosWrappers::SolverDirect direct(control, data);
+        try
+          {
+            direct.solve(A, x, b);
+          }
+        catch (const std::exception &e)
+          {
+            throw ConvergenceFailure("direct solver " + parameters.direct_solver +
+                                     " failed: " + exception_message(e));
+          }
+        return 0;
+      }
+
+    // ML smoothed aggregation with the full rigid-body near-null space.
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.aggregation_threshold = parameters.aggregation_threshold;
+    data.smoother_sweeps       = parameters.smoother_sweeps;
+    data.smoother_type         = "Chebyshev";
+    data.coarse_type           = "Amesos-KLU";
+    Teuchos::ParameterList               ml_list;
+    std::unique_ptr<Epetra_MultiVector>  unused_modes;
+    data.set_parameters(ml_list, unused_modes, A);
+    ml_list.set("PDE equations", static_cast<int>(n_components));
+    if (n_modes > 0)
+      {
+        AssertDimension(null_space.size(),
+                        n_modes * A.local_range().second - n_modes * A.local_range().first);
+        ml_list.set("null space: type", "pre-computed");
+        ml_list.set("null space: dimension", static_cast<int>(n_modes));
+        ml_list.set("null space: vectors", null_space.data());
+      }
+    amg.initialize(A, ml_list);
+
+    SolverControl control(parameters.max_iterations,
+                          parameters.relative_tolerance * b.l2_norm());
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    try
+      {
+        cg.solve(A, x, b, amg);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        throw ConvergenceFailure(
+          "CG with AMG did not converge: residual " +
+          std::to_string(e.last_residual) + " after " +
+          std::to_string(e.last_step) + " iterations (target " +
+          std::to_string(control.tolerance()) +
+          "); raise 'Linear solver/Max iterations' or use Type = direct");
+      }
+    return control.last_step();
+  }
+} // namespace hyperelastic

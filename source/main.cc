@@ -1,0 +1,64 @@
+// hyperelastic: command line handling; everything else lives in the library.
+#include <deal.II/base/mpi.h>
+
+#include <hyperelastic/error_handling.h>
+#include <hyperelastic/parameters.h>
+#include <hyperelastic/problem.h>
+
+#include <iostream>
+#include <string>
+
+namespace
+{
+  const char *usage =
+    "Usage: mpirun -np N hyperelastic SCENE.prm\n"
+    "       hyperelastic --print-parameters    every scene parameter with its\n"
+    "                                          default and documentation\n"
+    "       hyperelastic --help\n"
+    "\n"
+    "Solves a quasi-static hyperelastic problem on a simplex mesh with\n"
+    "Newton's method, writing ParaView files and a CSV summary per load step.\n"
+    "Exit status: 0 success, 1 input error, 2 internal error, 3 convergence\n"
+    "failure.\n";
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  using namespace hyperelastic;
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm comm = MPI_COMM_WORLD;
+  const bool     root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+
+  const std::string argument = argc == 2 ? argv[1] : "";
+  if (argument == "--help" || argument == "-h")
+    {
+      if (root)
+        std::cout << usage;
+      return success;
+    }
+  if (argument == "--print-parameters")
+    {
+      if (root)
+        {
+          dealii::ParameterHandler prm;
+          Parameters::declare(prm);
+          prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+        }
+      return success;
+    }
+  if (argc != 2 || argument.empty() || argument[0] == '-')
+    {
+      if (root)
+        std::cerr << usage;
+      return input_error;
+    }
+
+  return run_and_report(
+    [&]() {
+      Parameters parameters;
+      parameters.read(argument);
+      run_scene(parameters, comm);
+    },
+    comm);
+}

@@ -1,0 +1,124 @@
+// ParaView files (VTU/PVTU/PVD) and the per-step CSV summary.
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/numerics/data_component_interpretation.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <hyperelastic/error_handling.h>
+#include <hyperelastic/output.h>
+
+#include <filesystem>
+#include <iomanip>
+
+namespace hyperelastic
+{
+  using namespace dealii;
+
+  template <int dim>
+  OutputWriter<dim>::OutputWriter(const OutputParameters &parameters,
+                                  const MPI_Comm          comm)
+    : parameters(parameters)
+    , comm(comm)
+  {
+    std::string error;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::error_code ec;
+        std::filesystem::create_directories(parameters.directory, ec);
+        if (ec)
+          error = "cannot create output folder '" + parameters.directory +
+                  "' (Output/Directory): " + ec.message();
+        else
+          {
+            csv.open(csv_file());
+            if (!csv)
+              error = "cannot write '" + csv_file() + "' (Output/Directory)";
+          }
+      }
+    error = Utilities::MPI::broadcast(comm, error, 0);
+    if (!error.empty())
+      throw InputError(error);
+  }
+
+  template <int dim>
+  std::string
+  OutputWriter<dim>::csv_file() const
+  {
+    return parameters.directory + "/" + parameters.base_name + ".csv";
+  }
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_fields(const unsigned int                   step,
+                                  const double                         load_factor,
+                                  const DoFHandler<dim> &              dof_handler,
+                                  const Mapping<dim> &                 mapping,
+                                  const TrilinosWrappers::MPI::Vector &u,
+                                  const CellFields &                   fields)
+  {
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(
+      u, std::vector<std::string>(dim, "displacement"),
+      DataOut<dim>::type_dof_data,
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        dim, DataComponentInterpretation::component_is_part_of_vector));
+    data_out.add_data_vector(fields.J, "J", DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(fields.energy_density, "energy_density",
+                             DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(fields.von_mises, "von_Mises_stress",
+                             DataOut<dim>::type_cell_data);
+    const char *names[6] = {"cauchy_xx", "cauchy_yy", "cauchy_zz",
+                            "cauchy_xy", "cauchy_xz", "cauchy_yz"};
+    for (unsigned int c = 0; c < 6; ++c)
+      if (dim == 3 || c < 4)
+        data_out.add_data_vector(fields.cauchy[c], names[c],
+                                 DataOut<dim>::type_cell_data);
+    Vector<float> rank(dof_handler.get_triangulation().n_active_cells());
+    rank = static_cast<float>(Utilities::MPI::this_mpi_process(comm));
+    data_out.add_data_vector(rank, "mpi_rank", DataOut<dim>::type_cell_data);
+    data_out.build_patches(mapping);
+
+    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
+      parameters.directory + "/", parameters.base_name, step, comm, 4);
+    pvd_entries.emplace_back(load_factor, pvtu);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ofstream pvd(parameters.directory + "/" + parameters.base_name +
+                          ".pvd");
+        DataOutBase::write_pvd_record(pvd, pvd_entries);
+      }
+  }
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_summary(const StepSummary<dim> &s)
+  {
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    const char axes[3] = {'x', 'y', 'z'};
+    if (s.step == 1 || csv.tellp() == 0)
+      {
+        csv << "step,load_factor,newton_iterations,linear_iterations,residual,"
+               "energy,min_J";
+        for (const auto &[id, force] : s.reactions)
+          for (unsigned int d = 0; d < dim; ++d)
+            csv << ",reaction_" << id << '_' << axes[d];
+        for (unsigned int d = 0; d < dim; ++d)
+          csv << ",deformed_min_" << axes[d] << ",deformed_max_" << axes[d];
+        csv << '\n';
+      }
+    csv << s.step << ',' << std::setprecision(16) << s.load_factor << ','
+        << s.newton_iterations << ',' << s.linear_iterations << ','
+        << s.residual << ',' << s.energy << ',' << s.min_J;
+    for (const auto &[id, force] : s.reactions)
+      for (unsigned int d = 0; d < dim; ++d)
+        csv << ',' << force[d];
+    for (unsigned int d = 0; d < dim; ++d)
+      csv << ',' << s.deformed_min[d] << ',' << s.deformed_max[d];
+    csv << std::endl;
+  }
+
+  template class OutputWriter<2>;
+  template class OutputWriter<3>;
+} // namespace hyperelastic

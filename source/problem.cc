@@ -1,0 +1,284 @@
+// Orchestration of a scene: setup, load stepping, post-processing, output.
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <hyperelastic/error_handling.h>
+#include <hyperelastic/mesh.h>
+#include <hyperelastic/problem.h>
+#include <hyperelastic/rigid_body_modes.h>
+
+#include <iomanip>
+
+namespace hyperelastic
+{
+  using namespace dealii;
+
+  template <int dim>
+  Problem<dim>::Problem(const Parameters &parameters, const MPI_Comm comm,
+                        const bool print)
+    : parameters(parameters)
+    , comm(comm)
+    , pcout(std::cout, print && Utilities::MPI::this_mpi_process(comm) == 0)
+    , timer(comm, pcout, print ? TimerOutput::summary : TimerOutput::never,
+            TimerOutput::wall_times)
+    , triangulation(comm)
+    , fe(FE_SimplexP<dim>(parameters.problem.fe_degree), dim)
+    , mapping(FE_SimplexP<dim>(1))
+    , dof_handler(triangulation)
+    , linear_solver(parameters.linear_solver)
+    , newton(parameters.newton, pcout, parameters.output.verbose)
+  {
+    AssertThrow(parameters.problem.dimension == dim,
+                ExcMessage("Problem<dim> built for the wrong dimension"));
+  }
+
+  template <int dim>
+  void
+  Problem<dim>::setup()
+  {
+    TimerOutput::Scope scope(timer, "mesh and setup");
+    const auto mesh_ids = create_mesh(parameters.mesh, triangulation);
+
+    material = create_material<dim>(parameters.material.model,
+                                    parameters.material.lame);
+    boundary_conditions =
+      std::make_unique<BoundaryConditions<dim>>(parameters.loading, mesh_ids);
+    if (boundary_conditions->dirichlet.empty())
+      throw InputError("no Dirichlet condition is set (sections 'Dirichlet 1' "
+                       "... 'Dirichlet " +
+                       std::to_string(LoadingParameters::max_dirichlet) +
+                       "'): rigid-body motions would be free and the "
+                       "quasi-static problem singular");
+
+    dof_handler.distribute_dofs(fe);
+    owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+
+    boundary_conditions->make_constraints(mapping, dof_handler, relevant_dofs, 0.,
+                                          u_ghosted, true, homogeneous_constraints);
+
+    DynamicSparsityPattern dsp(relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, homogeneous_constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, relevant_dofs);
+    tangent.reinit(owned_dofs, owned_dofs, dsp, comm);
+
+    for (VectorType *v : {&u, &update, &rhs, &internal_force, &external_force, &residual})
+      v->reinit(owned_dofs, comm);
+    u_ghosted.reinit(owned_dofs, relevant_dofs, comm);
+
+    if (parameters.linear_solver.type == LinearSolverType::cg_amg)
+      linear_solver.set_near_null_space(rigid_body_modes(mapping, dof_handler),
+                                        n_rigid_body_modes<dim>, dim);
+
+    elasticity = std::make_unique<ElasticityOperator<dim>>(dof_handler, mapping,
+                                                           *material,
+                                                           *boundary_conditions);
+    writer = std::make_unique<OutputWriter<dim>>(parameters.output, comm);
+
+    // Dofs on each Dirichlet boundary, for the reaction forces. Ghost cells are
+    // visited too: a dof owned here may lie only on a neighbour's boundary face.
+    reaction_dofs.assign(boundary_conditions->dirichlet.size(), {});
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial() && cell->at_boundary())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            for (unsigned int b = 0; b < boundary_conditions->dirichlet.size(); ++b)
+              if (cell->face(f)->boundary_id() == boundary_conditions->dirichlet[b].id)
+                {
+                  cell->face(f)->get_dof_indices(face_dofs);
+                  for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                    if (owned_dofs.is_element(face_dofs[i]))
+                      reaction_dofs[b].emplace_back(
+                        face_dofs[i], fe.face_system_to_component_index(i, f).first);
+                }
+    for (auto &dofs : reaction_dofs)
+      {
+        std::sort(dofs.begin(), dofs.end());
+        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+      }
+
+    pcout << "hyperelastic: " << dim << "D"
+          << (dim == 2 ? " plane strain" : "") << ", P"
+          << parameters.problem.fe_degree << " simplices, "
+          << triangulation.n_global_active_cells() << " cells, "
+          << dof_handler.n_dofs() << " unknowns, "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n"
+          << "material: " << material->name()
+          << " (mu = " << parameters.material.lame.mu
+          << ", lambda = " << parameters.material.lame.lambda << ")\n"
+          << "linear solver: "
+          << (parameters.linear_solver.type == LinearSolverType::direct ?
+                parameters.linear_solver.direct_solver :
+                std::string("CG with ML AMG (rigid-body near-null space)"))
+          << std::endl;
+  }
+
+  // ------------------------------------------------------ NonlinearSystem
+  template <int dim>
+  void
+  Problem<dim>::assemble_linearization(const bool impose_constraint_increment)
+  {
+    TimerOutput::Scope scope(timer, "assembly");
+    if (impose_constraint_increment)
+      boundary_conditions->make_constraints(mapping, dof_handler, relevant_dofs,
+                                            load_factor, u_ghosted, false,
+                                            constraints);
+    elasticity->assemble_system(u_ghosted, load_factor,
+                                impose_constraint_increment ? constraints :
+                                                              homogeneous_constraints,
+                                tangent, rhs);
+    // Remember which constraints the update must satisfy.
+    if (!impose_constraint_increment)
+      constraints.copy_from(homogeneous_constraints);
+  }
+
+  template <int dim>
+  unsigned int
+  Problem<dim>::solve_linearization()
+  {
+    TimerOutput::Scope scope(timer, "linear solve");
+    update = 0.;
+    const unsigned int iterations = linear_solver.solve(tangent, update, rhs);
+    constraints.distribute(update);
+    return iterations;
+  }
+
+  template <int dim>
+  double
+  Problem<dim>::apply_update()
+  {
+    u += update;
+    u_ghosted = u;
+    return update.l2_norm();
+  }
+
+  template <int dim>
+  ResidualNorms
+  Problem<dim>::residual_norms()
+  {
+    TimerOutput::Scope scope(timer, "residual");
+    elasticity->assemble_forces(u_ghosted, load_factor, internal_force,
+                                external_force);
+    residual = internal_force;
+    residual -= external_force;
+    VectorType free_residual = residual;
+    homogeneous_constraints.set_zero(free_residual);
+    return {free_residual.l2_norm(),
+            std::max(internal_force.l2_norm(), external_force.l2_norm())};
+  }
+
+  template <int dim>
+  double
+  Problem<dim>::solution_norm() const
+  {
+    return u.l2_norm();
+  }
+
+  // ------------------------------------------------------------- results
+  template <int dim>
+  StepSummary<dim>
+  Problem<dim>::summarize(const unsigned int step, const NewtonResult &result)
+  {
+    TimerOutput::Scope scope(timer, "postprocessing");
+    StepSummary<dim> s;
+    s.step              = step;
+    s.load_factor       = load_factor;
+    s.newton_iterations = result.iterations();
+    s.linear_iterations = result.linear_iterations();
+    s.residual          = result.history.back().residual;
+    s.energy            = elasticity->total_energy(u_ghosted, load_factor);
+
+    // residual = f_int - f_ext at the converged state: on supported dofs it
+    // is the force the support exerts on the body.
+    for (unsigned int b = 0; b < reaction_dofs.size(); ++b)
+      {
+        Tensor<1, dim> force;
+        for (const auto &[dof, component] : reaction_dofs[b])
+          force[component] += residual(dof);
+        s.reactions.emplace_back(boundary_conditions->dirichlet[b].id,
+                                 Utilities::MPI::sum(force, comm));
+      }
+
+    // Bounding box of the deformed vertices.
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        s.deformed_min[d] = std::numeric_limits<double>::max();
+        s.deformed_max[d] = -std::numeric_limits<double>::max();
+      }
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double x =
+                cell->vertex(v)[d] + u_ghosted(cell->vertex_dof_index(v, d));
+              s.deformed_min[d] = std::min(s.deformed_min[d], x);
+              s.deformed_max[d] = std::max(s.deformed_max[d], x);
+            }
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        s.deformed_min[d] = Utilities::MPI::min(s.deformed_min[d], comm);
+        s.deformed_max[d] = Utilities::MPI::max(s.deformed_max[d], comm);
+      }
+
+    // min J always (cheap); the fields only if they are written.
+    const CellFields fields = elasticity->cell_fields(u_ghosted, s.min_J);
+    if (parameters.output.write_vtu)
+      {
+        TimerOutput::Scope output_scope(timer, "output");
+        writer->write_fields(step, load_factor, dof_handler, mapping, u_ghosted,
+                             fields);
+      }
+    return s;
+  }
+
+  template <int dim>
+  void
+  Problem<dim>::run()
+  {
+    setup();
+    if (parameters.output.write_vtu)
+      {
+        double           min_J;
+        const CellFields fields = elasticity->cell_fields(u_ghosted, min_J);
+        writer->write_fields(0, 0., dof_handler, mapping, u_ghosted, fields);
+      }
+
+    const unsigned int n_steps = parameters.loading.n_load_steps;
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        load_factor = double(step) / n_steps;
+        pcout << "\nLoad step " << step << " of " << n_steps
+              << ", load factor t = " << load_factor << std::endl;
+        const NewtonResult     result  = newton.solve(*this);
+        const StepSummary<dim> summary = summarize(step, result);
+        writer->write_summary(summary);
+        step_summaries.push_back(summary);
+        pcout << "   converged in " << result.iterations()
+              << " Newton iterations (" << result.linear_iterations()
+              << " linear); energy " << std::setprecision(10) << summary.energy
+              << ", min J " << summary.min_J << std::setprecision(6) << std::endl;
+      }
+    pcout << "\nSummary per load step: " << writer->csv_file();
+    if (parameters.output.write_vtu)
+      pcout << "; fields for ParaView: " << parameters.output.directory << "/"
+            << parameters.output.base_name << ".pvd";
+    pcout << std::endl;
+  }
+
+  void
+  run_scene(const Parameters &parameters, const MPI_Comm comm)
+  {
+    if (parameters.problem.dimension == 2)
+      Problem<2>(parameters, comm).run();
+    else
+      Problem<3>(parameters, comm).run();
+  }
+
+  template class Problem<2>;
+  template class Problem<3>;
+} // namespace hyperelastic
