@@ -78,7 +78,8 @@ namespace hyperelastic
                                                            *boundary_conditions);
     writer = std::make_unique<OutputWriter<dim>>(parameters.output, comm);
 
-    // Dofs on each Dirichlet boundary, for the reaction forces. Ghost cells are
+    // Dofs on each Dirichlet boundary with the components prescribed there,
+    // for the reaction forces. Ghost cells are
     // visited too: a dof owned here may lie only on a neighbour's boundary face.
     reaction_dofs.assign(boundary_conditions->dirichlet.size(), {});
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
@@ -91,9 +92,13 @@ namespace hyperelastic
                 {
                   cell->face(f)->get_dof_indices(face_dofs);
                   for (unsigned int i = 0; i < face_dofs.size(); ++i)
-                    if (owned_dofs.is_element(face_dofs[i]))
-                      reaction_dofs[b].emplace_back(
-                        face_dofs[i], fe.face_system_to_component_index(i, f).first);
+                    {
+                      const unsigned int c =
+                        fe.face_system_to_component_index(i, f).first;
+                      if (owned_dofs.is_element(face_dofs[i]) &&
+                          boundary_conditions->dirichlet[b].mask[c])
+                        reaction_dofs[b].emplace_back(face_dofs[i], c);
+                    }
                 }
     for (auto &dofs : reaction_dofs)
       {

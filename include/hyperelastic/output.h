@@ -30,8 +30,9 @@ namespace hyperelastic
     double       residual          = 0.;
     double       energy            = 0.;
     double       min_J             = 0.;
-    /// Force the supports exert on the body, per Dirichlet boundary id
-    /// (all components; the free ones are zero to solver tolerance).
+    /// Force the supports exert on the body, per Dirichlet boundary id: the
+    /// sum of f_int - f_ext over the dofs on that boundary, for the
+    /// components the condition prescribes (the others are reported as 0).
     std::vector<std::pair<dealii::types::boundary_id, dealii::Tensor<1, dim>>>
                            reactions;
     dealii::Tensor<1, dim> deformed_min; ///< bounding box of x = X + u

@@ -98,8 +98,8 @@ namespace hyperelastic
     dealii::AffineConstraints<double> constraints;
     dealii::AffineConstraints<double> homogeneous_constraints;
 
-    /// Owned dofs on each Dirichlet boundary (for the reactions), with their
-    /// vector component.
+    /// Owned dofs on each Dirichlet boundary whose component the condition
+    /// prescribes (for the reactions), with that component.
     std::vector<std::vector<std::pair<dealii::types::global_dof_index, unsigned int>>>
       reaction_dofs;
 

@@ -1,0 +1,68 @@
+// Exact homogeneous uniaxial stretch of a bar with symmetry rollers and
+// traction-free lateral faces (../shared/reference/analytic.md), written
+// independently of the material classes so the tests compare against them.
+#pragma once
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace hyperelastic::testing
+{
+  struct UniaxialState
+  {
+    double l2;  ///< lateral stretch
+    double P11; ///< axial first Piola-Kirchhoff stress
+  };
+
+  /// Root of an increasing function on [a, b] by bisection, to round-off.
+  template <typename Function>
+  double
+  bisect(Function f, double a, double b)
+  {
+    for (int i = 0; i < 200 && b - a > 1e-16 * b; ++i)
+      {
+        const double m = 0.5 * (a + b);
+        (f(m) > 0. ? b : a) = m;
+      }
+    return 0.5 * (a + b);
+  }
+
+  /// 3D: F = diag(l1, l2, l2); 2D plane strain: F = diag(l1, l2, 1).
+  inline UniaxialState
+  uniaxial(const std::string &model, const int dim, const double l1,
+           const double mu, const double lambda)
+  {
+    const double E  = mu * (3. * lambda + 2. * mu) / (lambda + mu);
+    const double nu = lambda / (2. * (lambda + mu));
+    if (model == "neo-Hookean")
+      {
+        // mu (l2^2 - 1) + lambda ln J = 0 with J = l1 l2^(dim - 1).
+        const auto J = [&](double l2) { return l1 * std::pow(l2, dim - 1); };
+        const double l2 = bisect(
+          [&](double l2) { return mu * (l2 * l2 - 1.) + lambda * std::log(J(l2)); },
+          1e-6, 10.);
+        return {l2, mu * (l1 - 1. / l1) + lambda * std::log(J(l2)) / l1};
+      }
+    if (model == "St. Venant-Kirchhoff")
+      {
+        const double E11 = 0.5 * (l1 * l1 - 1.);
+        if (dim == 3)
+          return {std::sqrt(1. - nu * (l1 * l1 - 1.)), E * l1 * E11};
+        // plane strain: S22 = 2 mu E22 + lambda (E11 + E22) = 0, E33 = 0.
+        const double E22 = -lambda * E11 / (2. * mu + lambda);
+        return {std::sqrt(1. + 2. * E22),
+                l1 * ((2. * mu + lambda) * E11 + lambda * E22)};
+      }
+    if (model == "corotational" || model == "linear elastic")
+      {
+        // Both are linear in the principal stretches for a diagonal F > 0.
+        const double e11 = l1 - 1.;
+        if (dim == 3)
+          return {1. - nu * e11, E * e11};
+        const double e22 = -lambda * e11 / (2. * mu + lambda);
+        return {1. + e22, (2. * mu + lambda) * e11 + lambda * e22};
+      }
+    throw std::invalid_argument("no analytic solution for model " + model);
+  }
+} // namespace hyperelastic::testing
