@@ -6,8 +6,9 @@
 //
 // Usage: bar_stretch DIM MODEL SOLVER DEGREE [MESH_FILE]
 //   MODEL: a material name; SOLVER: cg | direct; DEGREE: 1 | 2;
-//   MESH_FILE: a gmsh mesh of the box [0,3]x[0,1](x[0,1]) with the box's
-//   boundary ids; without it a generated box is used.
+//   MESH_FILE: a gmsh mesh of the box [0,3]x[0,1](x[0,1]) whose boundary
+//   ids are the generated box's plus one (gmsh has no physical tag 0);
+//   without it a generated box is used.
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/error_handling.h>
@@ -21,6 +22,7 @@
 #include <iostream>
 
 using namespace hyperelastic;
+using namespace dealii;
 using namespace hyperelastic::testing;
 
 namespace
@@ -48,6 +50,14 @@ namespace
     }
   };
 
+  /// Boundary id of the box face k (0: x = 0, 1: x = L, 2: y = 0, ...) is
+  /// k + id_offset.
+  int
+  id_offset(const std::string &mesh_file)
+  {
+    return mesh_file.empty() ? 0 : 1;
+  }
+
   std::string
   scene(const int dim, const std::string &model, const std::string &solver,
         const int degree, const std::string &mesh_file, const std::string &load,
@@ -70,9 +80,10 @@ namespace
                          entry("Lame lambda", std::to_string(lambda)));
     text += subsection("Loading", entry("Number of load steps", "5"));
     // Symmetry rollers on the faces x = 0 (id 0), y = 0 (id 2), z = 0 (id 4).
-    text += dirichlet(1, 0, "x", "0") + dirichlet(2, 2, "y", "0");
+    const int off = id_offset(mesh_file);
+    text += dirichlet(1, 0 + off, "x", "0") + dirichlet(2, 2 + off, "y", "0");
     if (dim == 3)
-      text += dirichlet(3, 4, "z", "0");
+      text += dirichlet(3, 4 + off, "z", "0");
     text += load;
     text += tight_solver(solver);
     text += subsection("Output", entry("Directory", "bar_stretch_output") +
@@ -97,13 +108,14 @@ namespace
     value << std::setprecision(17)
           << (traction ? exact.P11 : (l1_target - 1.) * length);
     const std::string exact_text = value.str();
+    const int         off        = id_offset(mesh_file);
     if (traction)
       load = subsection("Traction 1",
-                        entry("Boundary id", "1") +
+                        entry("Boundary id", std::to_string(1 + off)) +
                           entry("Traction", exact_text + "*t; 0" +
                                               (dim == 3 ? "; 0" : "")));
     else
-      load = dirichlet(4, 1, "x", exact_text + "*t");
+      load = dirichlet(4, 1 + off, "x", exact_text + "*t");
     parameters.read_from_string(
       scene(dim, model, solver, degree, mesh_file, load, name), ".", name);
 
@@ -125,9 +137,9 @@ namespace
         // Roller on x = 0 carries -P11 A; the end face (if supported) +P11 A;
         // the lateral rollers carry nothing.
         double expected = 0.;
-        if (id == 0)
+        if (id == types::boundary_id(0 + off))
           expected = -exact.P11 * area;
-        if (id == 1)
+        if (id == types::boundary_id(1 + off))
           expected = exact.P11 * area;
         checker.check("reaction x on boundary " + std::to_string(id), force[0],
                       expected, force_scale);
