@@ -1,0 +1,220 @@
+// Rank invariance: the same scene solved on all ranks of MPI_COMM_WORLD
+// (METIS partitions) and on rank 0 alone must give the same energies,
+// reactions, deformed bounding boxes and point displacements to 1e-10
+// relative. Scenes: the homogeneous bar (exact answer) and a
+// non-homogeneous clamped bar that is twisted, pulled, loaded by a body
+// force and by a traction, in 2D and 3D.
+//
+// Usage: mpirun -np N rank_invariance
+#include <deal.II/base/mpi.h>
+
+#include <hyperelastic/error_handling.h>
+#include <hyperelastic/problem.h>
+
+#include "scene_text.h"
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+using namespace hyperelastic;
+using namespace hyperelastic::testing;
+using namespace dealii;
+
+namespace
+{
+  constexpr double tolerance = 1e-10;
+
+  std::string
+  scene(const int dim, const bool twisted, const std::string &base_name)
+  {
+    const bool three = dim == 3;
+    std::string text =
+      subsection("Problem", entry("Dimension", std::to_string(dim))) +
+      subsection("Mesh", entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
+                           entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
+                           entry("Subdivisions", three ? "6, 2, 2" : "12, 4")) +
+      subsection("Material", entry("Model", three ? "neo-Hookean" : "corotational") +
+                               entry("Young's modulus", "1") +
+                               entry("Poisson's ratio", "0.3"));
+    if (twisted)
+      {
+        text += subsection("Loading",
+                           entry("Number of load steps", "3") +
+                             entry("Constants", "a = 1.0") +
+                             entry("Body force", three ? "0; 0; -0.05*t" : "0; -0.05*t"));
+        text += dirichlet(1, 0, three ? "x, y, z" : "x, y", three ? "0; 0; 0" : "0; 0");
+        text += dirichlet(2, 1, three ? "x, y, z" : "x, y",
+                          three ? "0.3*t; (cos(a*t) - 1)*(y - 0.5) - sin(a*t)*(z - 0.5);"
+                                  " sin(a*t)*(y - 0.5) + (cos(a*t) - 1)*(z - 0.5)" :
+                                  "0.2*t; 0.3*t");
+        text += subsection("Traction 1", entry("Boundary id", "3") +
+                                           entry("Traction", three ? "0; 0.02*t; 0" :
+                                                                     "0.02*t; 0"));
+      }
+    else
+      {
+        text += subsection("Loading", entry("Number of load steps", "2"));
+        text += dirichlet(1, 0, "x", "0") + dirichlet(2, 2, "y", "0") +
+                dirichlet(3, 1, "x", "1.5*t");
+        if (three)
+          text += dirichlet(4, 4, "z", "0");
+      }
+    return text + tight_solver("cg") +
+           subsection("Output", entry("Directory", "rank_invariance_output") +
+                                  entry("Base name", base_name) +
+                                  entry("Write VTU", "false") +
+                                  entry("Verbose", "false"));
+  }
+
+  /// Named numbers a run produces: per load step the energy, the reactions
+  /// and the deformed bounding box, then the displacement at a few vertices.
+  struct Numbers
+  {
+    std::vector<std::string> names;
+    std::vector<double>      values;
+    void
+    add(const std::string &name, const double value)
+    {
+      names.push_back(name);
+      values.push_back(value);
+    }
+  };
+
+  template <int dim>
+  Numbers
+  solve(const std::string &text, const MPI_Comm comm)
+  {
+    Parameters parameters;
+    parameters.read_from_string(text);
+    Problem<dim> problem(parameters, comm, false);
+    problem.run();
+
+    Numbers numbers;
+    for (const auto &s : problem.summaries())
+      {
+        const std::string step = "step " + std::to_string(s.step) + ": ";
+        numbers.add(step + "energy", s.energy);
+        for (const auto &[id, force] : s.reactions)
+          for (unsigned int d = 0; d < dim; ++d)
+            numbers.add(step + "reaction " + std::to_string(id) + " " +
+                          std::string(1, "xyz"[d]),
+                        force[d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            numbers.add(step + "deformed min " + std::string(1, "xyz"[d]),
+                        s.deformed_min[d]);
+            numbers.add(step + "deformed max " + std::string(1, "xyz"[d]),
+                        s.deformed_max[d]);
+          }
+      }
+
+    // Displacements at a few vertices, wherever they are owned.
+    std::vector<Point<dim>> points(3);
+    points[0][0] = 1.5;
+    points[1][0] = 3.;
+    points[2][0] = 3.;
+    for (unsigned int d = 1; d < dim; ++d)
+      {
+        points[0][d] = 0.5;
+        points[2][d] = 1.;
+      }
+    const auto &dof_handler = problem.get_dof_handler();
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        Tensor<1, dim> u;
+        double         found = 0.;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int v : cell->vertex_indices())
+              if (cell->vertex(v).distance(points[p]) < 1e-12 && found == 0.)
+                {
+                  for (unsigned int d = 0; d < dim; ++d)
+                    u[d] = problem.solution()(cell->vertex_dof_index(v, d));
+                  found = 1.;
+                }
+        // A vertex may be owned by several ranks' cells: take one copy.
+        const double n_found = Utilities::MPI::sum(found, comm);
+        const double owner   = Utilities::MPI::max(
+          found > 0. ? double(Utilities::MPI::this_mpi_process(comm)) : -1., comm);
+        AssertThrow(n_found > 0., ExcMessage("test vertex not in the mesh"));
+        if (double(Utilities::MPI::this_mpi_process(comm)) != owner)
+          u = 0.;
+        u = Utilities::MPI::sum(u, comm);
+        for (unsigned int d = 0; d < dim; ++d)
+          numbers.add("u" + std::string(1, "xyz"[d]) + " at vertex " +
+                        std::to_string(p),
+                      u[d]);
+      }
+    return numbers;
+  }
+
+  /// Returns {numbers compared, numbers that differ}.
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  compare(const bool twisted, const bool print)
+  {
+    const std::string tag =
+      std::to_string(dim) + "d_" + (twisted ? "twisted" : "bar");
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const Numbers      parallel =
+      solve<dim>(scene(dim, twisted, tag + "_np" + std::to_string(n_ranks)),
+                 MPI_COMM_WORLD);
+    unsigned int failed = 0, checked = 0;
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      {
+        const Numbers serial = solve<dim>(scene(dim, twisted, tag + "_np1"),
+                                          MPI_COMM_SELF);
+        // Relative to the largest number of the same kind, so that values
+        // that are zero by symmetry are judged against the problem's scale.
+        double scale = 0.;
+        for (const double v : serial.values)
+          scale = std::max(scale, std::abs(v));
+        if (print)
+          std::cout << tag << ": " << n_ranks << " ranks against 1\n";
+        for (unsigned int i = 0; i < serial.values.size(); ++i)
+          {
+            const double error =
+              std::abs(parallel.values[i] - serial.values[i]) /
+              std::max(std::abs(serial.values[i]), 1e-3 * scale);
+            const bool ok = error < tolerance;
+            failed += ok ? 0 : 1;
+            if (print)
+              std::cout << "  " << std::left << std::setw(32) << serial.names[i]
+                        << std::right << std::setprecision(14) << std::setw(24)
+                        << parallel.values[i] << std::setw(24) << serial.values[i]
+                        << std::setprecision(2) << std::scientific << std::setw(10)
+                        << error << std::defaultfloat << (ok ? "  PASS" : "  FAIL")
+                        << '\n';
+          }
+        checked = serial.values.size();
+        if (serial.values.size() != parallel.values.size())
+          ++failed;
+      }
+    return Utilities::MPI::broadcast(MPI_COMM_WORLD,
+                                     std::make_pair(checked, failed), 0);
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool   print  = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  unsigned int failed = 0, n_checks = 0;
+  const int    status = run_and_report(
+    [&]() {
+      for (const bool twisted : {false, true})
+        for (const auto &[checked, differ] :
+             {compare<2>(twisted, print), compare<3>(twisted, print)})
+          {
+            n_checks += checked;
+            failed += differ;
+          }
+    },
+    MPI_COMM_WORLD);
+  if (print)
+    std::cout << (n_checks - std::min(n_checks, failed)) << " passed, " << failed
+              << " failed" << std::endl;
+  return (status != 0 || failed > 0 || n_checks == 0) ? 1 : 0;
+}
