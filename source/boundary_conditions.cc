@@ -6,6 +6,9 @@
 #include <hyperelastic/boundary_conditions.h>
 #include <hyperelastic/error_handling.h>
 
+#include <iostream>
+#include <sstream>
+
 namespace hyperelastic
 {
   using namespace dealii;
@@ -21,15 +24,21 @@ namespace hyperelastic
     const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
 
     auto function = std::make_unique<FunctionParser<dim>>(dim);
+    // deal.II prints muParser's complaint to std::cerr itself; keep it out of
+    // the output, the message below says the same with the entry named.
+    std::ostringstream parser_chatter;
+    std::streambuf *   cerr_buffer = std::cerr.rdbuf(parser_chatter.rdbuf());
     try
       {
         function->initialize(variables, expressions, all_constants, true);
         // muParser compiles lazily: evaluate once so that errors show now.
         Vector<double> value(dim);
         function->vector_value(Point<dim>(), value);
+        std::cerr.rdbuf(cerr_buffer);
       }
     catch (const std::exception &e)
       {
+        std::cerr.rdbuf(cerr_buffer);
         std::string joined;
         for (const auto &x : expressions)
           joined += (joined.empty() ? "" : "; ") + x;

@@ -313,9 +313,9 @@ namespace hyperelastic
                       "Converged when the l2 norm of the residual on the free "
                       "degrees of freedom is below this (force units), or ...");
     prm.declare_entry("Relative residual tolerance", "1e-10", Double(0),
-                      "... or below this times the l2 norm of the internal "
-                      "force vector (all degrees of freedom, so reactions "
-                      "count); and ...");
+                      "... or below this times the larger of the l2 norms of "
+                      "the internal and the external force vectors (all "
+                      "degrees of freedom, so reactions count), and ...");
     prm.declare_entry("Update tolerance", "1e-8", Double(0),
                       "... the last Newton update is below this times the "
                       "l2 norm of the displacement vector.");
@@ -368,6 +368,9 @@ namespace hyperelastic
     type = prm.get("Type") == "direct" ? LinearSolverType::direct :
                                          LinearSolverType::cg_amg;
     relative_tolerance    = prm.get_double("Relative tolerance");
+    if (!(relative_tolerance > 0.))
+      reject("Linear solver/Relative tolerance", prm.get("Relative tolerance"),
+             "must be positive");
     max_iterations        = prm.get_integer("Max iterations");
     direct_solver         = prm.get("Direct solver");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");

@@ -78,26 +78,39 @@ namespace hyperelastic
                                                            *boundary_conditions);
     writer = std::make_unique<OutputWriter<dim>>(parameters.output, comm);
 
-    // Dofs on each Dirichlet boundary with the components prescribed there,
-    // for the reaction forces. Ghost cells are
+    // Dofs on each Dirichlet boundary id with the components prescribed there
+    // (by one or several sections), for the reaction forces. Ghost cells are
     // visited too: a dof owned here may lie only on a neighbour's boundary face.
-    reaction_dofs.assign(boundary_conditions->dirichlet.size(), {});
+    reaction_ids.clear();
+    std::vector<std::vector<bool>> prescribed;
+    for (const auto &d : boundary_conditions->dirichlet)
+      {
+        const auto it = std::find(reaction_ids.begin(), reaction_ids.end(), d.id);
+        const unsigned int r = it - reaction_ids.begin();
+        if (it == reaction_ids.end())
+          {
+            reaction_ids.push_back(d.id);
+            prescribed.emplace_back(dim, false);
+          }
+        for (unsigned int c = 0; c < dim; ++c)
+          prescribed[r][c] = prescribed[r][c] || d.mask[c];
+      }
+    reaction_dofs.assign(reaction_ids.size(), {});
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial() && cell->at_boundary())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary())
-            for (unsigned int b = 0; b < boundary_conditions->dirichlet.size(); ++b)
-              if (cell->face(f)->boundary_id() == boundary_conditions->dirichlet[b].id)
+            for (unsigned int r = 0; r < reaction_ids.size(); ++r)
+              if (cell->face(f)->boundary_id() == reaction_ids[r])
                 {
                   cell->face(f)->get_dof_indices(face_dofs);
                   for (unsigned int i = 0; i < face_dofs.size(); ++i)
                     {
                       const unsigned int c =
                         fe.face_system_to_component_index(i, f).first;
-                      if (owned_dofs.is_element(face_dofs[i]) &&
-                          boundary_conditions->dirichlet[b].mask[c])
-                        reaction_dofs[b].emplace_back(face_dofs[i], c);
+                      if (owned_dofs.is_element(face_dofs[i]) && prescribed[r][c])
+                        reaction_dofs[r].emplace_back(face_dofs[i], c);
                     }
                 }
     for (auto &dofs : reaction_dofs)
@@ -199,13 +212,12 @@ namespace hyperelastic
 
     // residual = f_int - f_ext at the converged state: on supported dofs it
     // is the force the support exerts on the body.
-    for (unsigned int b = 0; b < reaction_dofs.size(); ++b)
+    for (unsigned int r = 0; r < reaction_ids.size(); ++r)
       {
         Tensor<1, dim> force;
-        for (const auto &[dof, component] : reaction_dofs[b])
+        for (const auto &[dof, component] : reaction_dofs[r])
           force[component] += residual(dof);
-        s.reactions.emplace_back(boundary_conditions->dirichlet[b].id,
-                                 Utilities::MPI::sum(force, comm));
+        s.reactions.emplace_back(reaction_ids[r], Utilities::MPI::sum(force, comm));
       }
 
     // Bounding box of the deformed vertices.
@@ -245,6 +257,27 @@ namespace hyperelastic
   void
   Problem<dim>::run()
   {
+    try
+      {
+        solve_all_load_steps();
+      }
+    catch (const InputError &)
+      {
+        // A timing table would only bury the message.
+        timer.disable_output();
+        throw;
+      }
+    catch (const ConvergenceFailure &)
+      {
+        timer.disable_output();
+        throw;
+      }
+  }
+
+  template <int dim>
+  void
+  Problem<dim>::solve_all_load_steps()
+  {
     setup();
     if (parameters.output.write_vtu)
       {
@@ -275,13 +308,44 @@ namespace hyperelastic
     pcout << std::endl;
   }
 
+  namespace
+  {
+    // Errors that all ranks raise together are rethrown only after the
+    // problem (and its timer, which communicates when destroyed) is gone, so
+    // that nothing is destroyed while an exception is in flight. Errors of a
+    // single rank propagate at once: main() aborts the job.
+    template <int dim>
+    void
+    run_problem(const Parameters &parameters, const MPI_Comm comm)
+    {
+      std::exception_ptr collective_error;
+      {
+        Problem<dim> problem(parameters, comm);
+        try
+          {
+            problem.run();
+          }
+        catch (const InputError &)
+          {
+            collective_error = std::current_exception();
+          }
+        catch (const ConvergenceFailure &)
+          {
+            collective_error = std::current_exception();
+          }
+      }
+      if (collective_error)
+        std::rethrow_exception(collective_error);
+    }
+  } // namespace
+
   void
   run_scene(const Parameters &parameters, const MPI_Comm comm)
   {
     if (parameters.problem.dimension == 2)
-      Problem<2>(parameters, comm).run();
+      run_problem<2>(parameters, comm);
     else
-      Problem<3>(parameters, comm).run();
+      run_problem<3>(parameters, comm);
   }
 
   template class Problem<2>;

@@ -72,7 +72,7 @@ namespace hyperelastic
 
   struct LoadingParameters
   {
-    unsigned int                  n_load_steps = 1;
+    unsigned int                  n_load_steps = 10;
     std::vector<std::string>      body_force; ///< empty: no body force
     std::map<std::string, double> constants;
     std::vector<DirichletCondition> dirichlet;

@@ -69,6 +69,8 @@ namespace hyperelastic
 
   private:
     void
+    solve_all_load_steps();
+    void
     setup();
     StepSummary<dim>
     summarize(unsigned int step, const NewtonResult &newton_result);
@@ -98,8 +100,10 @@ namespace hyperelastic
     dealii::AffineConstraints<double> constraints;
     dealii::AffineConstraints<double> homogeneous_constraints;
 
-    /// Owned dofs on each Dirichlet boundary whose component the condition
-    /// prescribes (for the reactions), with that component.
+    /// The distinct Dirichlet boundary ids and, for each, the owned dofs on
+    /// it whose component is prescribed there, with that component (for the
+    /// reaction forces).
+    std::vector<dealii::types::boundary_id> reaction_ids;
     std::vector<std::vector<std::pair<dealii::types::global_dof_index, unsigned int>>>
       reaction_dofs;
 
