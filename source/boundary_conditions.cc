@@ -15,9 +15,9 @@ namespace hyperelastic
 
   template <int dim>
   std::unique_ptr<Function<dim>>
-  parse_vector_function(const std::vector<std::string> &     expressions,
+  parse_vector_function(const std::vector<std::string>      &expressions,
                         const std::map<std::string, double> &constants,
-                        const std::string &                  entry)
+                        const std::string                   &entry)
   {
     std::map<std::string, double> all_constants = constants;
     all_constants.emplace("pi", numbers::PI);
@@ -27,7 +27,7 @@ namespace hyperelastic
     // deal.II prints muParser's complaint to std::cerr itself; keep it out of
     // the output, the message below says the same with the entry named.
     std::ostringstream parser_chatter;
-    std::streambuf *   cerr_buffer = std::cerr.rdbuf(parser_chatter.rdbuf());
+    std::streambuf    *cerr_buffer = std::cerr.rdbuf(parser_chatter.rdbuf());
     try
       {
         function->initialize(variables, expressions, all_constants, true);
@@ -42,10 +42,10 @@ namespace hyperelastic
         std::string joined;
         for (const auto &x : expressions)
           joined += (joined.empty() ? "" : "; ") + x;
-        throw InputError("scene entry '" + entry + "' = '" + joined +
-                         "': cannot parse the expression (variables are " +
-                         variables + " and the Loading/Constants): " +
-                         exception_message(e));
+        throw InputError(
+          "scene entry '" + entry + "' = '" + joined +
+          "': cannot parse the expression (variables are " + variables +
+          " and the Loading/Constants): " + exception_message(e));
       }
     return function;
   }
@@ -64,15 +64,17 @@ namespace hyperelastic
 
   template <int dim>
   BoundaryConditions<dim>::BoundaryConditions(
-    const LoadingParameters &    loading,
+    const LoadingParameters     &loading,
     const std::set<boundary_id> &mesh_ids)
   {
-    const auto check_id = [&](const boundary_id id, const std::string &section) {
+    const auto check_id = [&](const boundary_id  id,
+                              const std::string &section) {
       if (mesh_ids.count(id) == 0)
-        throw InputError("scene entry '" + section + "/Boundary id' = " +
-                         std::to_string(id) +
-                         ": the mesh has no boundary with this id; its boundary "
-                         "ids are " + list_ids(mesh_ids));
+        throw InputError(
+          "scene entry '" + section + "/Boundary id' = " + std::to_string(id) +
+          ": the mesh has no boundary with this id; its boundary "
+          "ids are " +
+          list_ids(mesh_ids));
     };
 
     for (const auto &c : loading.dirichlet)
@@ -86,18 +88,21 @@ namespace hyperelastic
             mask[c.components[i]]        = true;
           }
         dirichlet.push_back(
-          {c.boundary_id, ComponentMask(mask),
-           parse_vector_function<dim>(expressions, loading.constants,
+          {c.boundary_id,
+           ComponentMask(mask),
+           parse_vector_function<dim>(expressions,
+                                      loading.constants,
                                       c.subsection + "/Displacement"),
            c.subsection});
       }
     for (const auto &c : loading.tractions)
       {
         check_id(c.boundary_id, c.subsection);
-        tractions.push_back({c.boundary_id,
-                             parse_vector_function<dim>(c.expressions,
-                                                        loading.constants,
-                                                        c.subsection + "/Traction")});
+        tractions.push_back(
+          {c.boundary_id,
+           parse_vector_function<dim>(c.expressions,
+                                      loading.constants,
+                                      c.subsection + "/Traction")});
       }
     if (!loading.body_force.empty())
       body_force = parse_vector_function<dim>(loading.body_force,
@@ -108,13 +113,13 @@ namespace hyperelastic
   template <int dim>
   void
   BoundaryConditions<dim>::make_constraints(
-    const Mapping<dim> &                              mapping,
-    const DoFHandler<dim> &                           dof_handler,
-    const IndexSet &                                  relevant_dofs,
-    const double                                      t,
-    const TrilinosWrappers::MPI::Vector &              current_ghosted,
-    const bool                                        homogeneous,
-    AffineConstraints<double> &                       constraints) const
+    const Mapping<dim>                  &mapping,
+    const DoFHandler<dim>               &dof_handler,
+    const IndexSet                      &relevant_dofs,
+    const double                         t,
+    const TrilinosWrappers::MPI::Vector &current_ghosted,
+    const bool                           homogeneous,
+    AffineConstraints<double>           &constraints) const
   {
     constraints.clear();
     constraints.reinit(relevant_dofs);
@@ -123,16 +128,20 @@ namespace hyperelastic
         std::map<types::global_dof_index, double> values;
         d.displacement->set_time(t);
         VectorTools::interpolate_boundary_values(
-          mapping, dof_handler, std::map<types::boundary_id, const Function<dim> *>{
-                                  {d.id, d.displacement.get()}},
-          values, d.mask);
+          mapping,
+          dof_handler,
+          std::map<types::boundary_id, const Function<dim> *>{
+            {d.id, d.displacement.get()}},
+          values,
+          d.mask);
         for (const auto &[dof, value] : values)
           if (!constraints.is_constrained(dof))
             {
               constraints.add_line(dof);
               if (!homogeneous)
                 {
-                constraints.set_inhomogeneity(dof, value - current_ghosted(dof));
+                  constraints.set_inhomogeneity(dof,
+                                                value - current_ghosted(dof));
                 }
             }
       }

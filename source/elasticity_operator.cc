@@ -16,18 +16,19 @@ namespace hyperelastic
 
   template <int dim>
   ElasticityOperator<dim>::ElasticityOperator(
-    const DoFHandler<dim> &        dof_handler,
-    const Mapping<dim> &           mapping,
-    const Material<dim> &          material,
+    const DoFHandler<dim>         &dof_handler,
+    const Mapping<dim>            &mapping,
+    const Material<dim>           &material,
     const BoundaryConditions<dim> &boundary_conditions)
-    : dof_handler(dof_handler)
-    , mapping(mapping)
-    , material(material)
-    , boundary_conditions(boundary_conditions)
-    , stress_quadrature(QGaussSimplex<dim>(dof_handler.get_fe().degree))
-    , load_quadrature(QGaussSimplex<dim>(dof_handler.get_fe().degree + 1))
-    , face_quadrature(QGaussSimplex<dim - 1>(dof_handler.get_fe().degree + 1))
-  {}
+      : dof_handler(dof_handler)
+      , mapping(mapping)
+      , material(material)
+      , boundary_conditions(boundary_conditions)
+      , stress_quadrature(QGaussSimplex<dim>(dof_handler.get_fe().degree))
+      , load_quadrature(QGaussSimplex<dim>(dof_handler.get_fe().degree + 1))
+      , face_quadrature(QGaussSimplex<dim - 1>(dof_handler.get_fe().degree + 1))
+  {
+  }
 
   namespace
   {
@@ -35,23 +36,30 @@ namespace hyperelastic
     template <int dim>
     struct CellData
     {
-      CellData(const Mapping<dim> &      mapping,
-               const FiniteElement<dim> &fe,
-               const Quadrature<dim> &   stress_quadrature,
-               const Quadrature<dim> &   load_quadrature,
+      CellData(const Mapping<dim>        &mapping,
+               const FiniteElement<dim>  &fe,
+               const Quadrature<dim>     &stress_quadrature,
+               const Quadrature<dim>     &load_quadrature,
                const Quadrature<dim - 1> &face_quadrature)
-        : stress_values(mapping, fe, stress_quadrature,
-                        update_gradients | update_JxW_values)
-        , load_values(mapping, fe, load_quadrature,
-                      update_values | update_quadrature_points |
-                        update_JxW_values)
-        , face_values(mapping, fe, face_quadrature,
-                      update_values | update_quadrature_points |
-                        update_JxW_values)
-        , dofs(fe.dofs_per_cell)
-        , u(fe.dofs_per_cell)
-        , F(stress_quadrature.size())
-      {}
+          : stress_values(mapping,
+                          fe,
+                          stress_quadrature,
+                          update_gradients | update_JxW_values)
+          , load_values(mapping,
+                        fe,
+                        load_quadrature,
+                        update_values | update_quadrature_points |
+                          update_JxW_values)
+          , face_values(mapping,
+                        fe,
+                        face_quadrature,
+                        update_values | update_quadrature_points |
+                          update_JxW_values)
+          , dofs(fe.dofs_per_cell)
+          , u(fe.dofs_per_cell)
+          , F(stress_quadrature.size())
+      {
+      }
 
       FEValues<dim>                        stress_values;
       FEValues<dim>                        load_values;
@@ -67,7 +75,7 @@ namespace hyperelastic
     compute_deformation_gradients(CellData<dim> &data)
     {
       const FEValuesExtractors::Vector displacement(0);
-      const FEValues<dim> &            fe_values = data.stress_values;
+      const FEValues<dim>             &fe_values = data.stress_values;
       for (unsigned int q = 0; q < data.F.size(); ++q)
         {
           Tensor<2, dim> F = unit_symmetric_tensor<dim>();
@@ -81,12 +89,12 @@ namespace hyperelastic
     /// their work on u) of one cell.
     template <int dim>
     void
-    add_loads(CellData<dim> &                                       data,
+    add_loads(CellData<dim>                                        &data,
               const typename DoFHandler<dim>::active_cell_iterator &cell,
-              const BoundaryConditions<dim> &                       bc,
+              const BoundaryConditions<dim>                        &bc,
               const double                                          t,
-              Vector<double> *                                      external,
-              double *                                              work)
+              Vector<double>                                       *external,
+              double                                               *work)
     {
       const FiniteElement<dim> &fe = cell->get_fe();
       Vector<double>            value(dim);
@@ -94,7 +102,8 @@ namespace hyperelastic
         {
           bc.body_force->set_time(t);
           data.load_values.reinit(cell);
-          for (unsigned int q = 0; q < data.load_values.n_quadrature_points; ++q)
+          for (unsigned int q = 0; q < data.load_values.n_quadrature_points;
+               ++q)
             {
               bc.body_force->vector_value(data.load_values.quadrature_point(q),
                                           value);
@@ -102,7 +111,8 @@ namespace hyperelastic
               for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
                 {
                   const unsigned int c = fe.system_to_component_index(i).first;
-                  const double f = value[c] * data.load_values.shape_value(i, q) * JxW;
+                  const double       f =
+                    value[c] * data.load_values.shape_value(i, q) * JxW;
                   if (external)
                     (*external)[i] += f;
                   if (work)
@@ -119,15 +129,18 @@ namespace hyperelastic
               {
                 traction.traction->set_time(t);
                 data.face_values.reinit(cell, f);
-                for (unsigned int q = 0; q < data.face_values.n_quadrature_points; ++q)
+                for (unsigned int q = 0;
+                     q < data.face_values.n_quadrature_points;
+                     ++q)
                   {
                     traction.traction->vector_value(
                       data.face_values.quadrature_point(q), value);
                     const double JxW = data.face_values.JxW(q);
                     for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
                       {
-                        const unsigned int c = fe.system_to_component_index(i).first;
-                        const double       force =
+                        const unsigned int c =
+                          fe.system_to_component_index(i).first;
+                        const double force =
                           value[c] * data.face_values.shape_value(i, q) * JxW;
                         if (external)
                           (*external)[i] += force;
@@ -143,10 +156,13 @@ namespace hyperelastic
   template <typename CellWorker>
   void
   ElasticityOperator<dim>::for_each_cell(const VectorType &u,
-                                         CellWorker &&     worker) const
+                                         CellWorker      &&worker) const
   {
-    CellData<dim> data(mapping, dof_handler.get_fe(), stress_quadrature,
-                       load_quadrature, face_quadrature);
+    CellData<dim> data(mapping,
+                       dof_handler.get_fe(),
+                       stress_quadrature,
+                       load_quadrature,
+                       face_quadrature);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -160,18 +176,19 @@ namespace hyperelastic
 
   template <int dim>
   void
-  ElasticityOperator<dim>::assemble_forces(const VectorType &u, const double t,
-                                           VectorType &internal,
-                                           VectorType &external) const
+  ElasticityOperator<dim>::assemble_forces(const VectorType &u,
+                                           const double      t,
+                                           VectorType       &internal,
+                                           VectorType       &external) const
   {
-    internal = 0.;
-    external = 0.;
+    internal                     = 0.;
+    external                     = 0.;
     const FiniteElement<dim> &fe = dof_handler.get_fe();
     Vector<double>            cell_internal(fe.dofs_per_cell);
     Vector<double>            cell_external(fe.dofs_per_cell);
     for_each_cell(u, [&](const auto &cell, CellData<dim> &data) {
-      cell_internal = 0.;
-      cell_external = 0.;
+      cell_internal                  = 0.;
+      cell_external                  = 0.;
       const FEValues<dim> &fe_values = data.stress_values;
       for (unsigned int q = 0; q < data.F.size(); ++q)
         {
@@ -180,7 +197,8 @@ namespace hyperelastic
           for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
             {
               const unsigned int c = fe.system_to_component_index(i).first;
-              cell_internal[i] += (P[c] * fe_values.shape_grad_component(i, q, c)) * JxW;
+              cell_internal[i] +=
+                (P[c] * fe_values.shape_grad_component(i, q, c)) * JxW;
             }
         }
       add_loads(data, cell, boundary_conditions, t, &cell_external, nullptr);
@@ -194,14 +212,14 @@ namespace hyperelastic
   template <int dim>
   void
   ElasticityOperator<dim>::assemble_system(
-    const VectorType &               u,
+    const VectorType                &u,
     const double                     t,
     const AffineConstraints<double> &constraints,
-    MatrixType &                     matrix,
-    VectorType &                     rhs) const
+    MatrixType                      &matrix,
+    VectorType                      &rhs) const
   {
-    matrix = 0.;
-    rhs    = 0.;
+    matrix                       = 0.;
+    rhs                          = 0.;
     const FiniteElement<dim> &fe = dof_handler.get_fe();
     const unsigned int        n  = fe.dofs_per_cell;
     FullMatrix<double>        cell_matrix(n, n);
@@ -215,8 +233,8 @@ namespace hyperelastic
     StressTangent<dim>          A;
 
     for_each_cell(u, [&](const auto &cell, CellData<dim> &data) {
-      cell_matrix = 0.;
-      cell_rhs    = 0.;
+      cell_matrix                    = 0.;
+      cell_rhs                       = 0.;
       const FEValues<dim> &fe_values = data.stress_values;
       for (unsigned int q = 0; q < data.F.size(); ++q)
         {
@@ -241,8 +259,8 @@ namespace hyperelastic
       cell_external = 0.;
       add_loads(data, cell, boundary_conditions, t, &cell_external, nullptr);
       cell_rhs += cell_external;
-      constraints.distribute_local_to_global(cell_matrix, cell_rhs, data.dofs,
-                                             matrix, rhs, true);
+      constraints.distribute_local_to_global(
+        cell_matrix, cell_rhs, data.dofs, matrix, rhs, true);
     });
     matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
@@ -250,12 +268,14 @@ namespace hyperelastic
 
   template <int dim>
   double
-  ElasticityOperator<dim>::total_energy(const VectorType &u, const double t) const
+  ElasticityOperator<dim>::total_energy(const VectorType &u,
+                                        const double      t) const
   {
     double energy = 0.;
     for_each_cell(u, [&](const auto &cell, CellData<dim> &data) {
       for (unsigned int q = 0; q < data.F.size(); ++q)
-        energy += material.energy_density(data.F[q]) * data.stress_values.JxW(q);
+        energy +=
+          material.energy_density(data.F[q]) * data.stress_values.JxW(q);
       double work = 0.;
       add_loads(data, cell, boundary_conditions, t, nullptr, &work);
       energy -= work;
@@ -270,7 +290,8 @@ namespace hyperelastic
     Tensor<2, 3>
     cauchy_stress_3d(const Material<3> &material3d, const Tensor<2, 3> &F)
     {
-      return material3d.first_piola_kirchhoff(F) * transpose(F) / determinant(F);
+      return material3d.first_piola_kirchhoff(F) * transpose(F) /
+             determinant(F);
     }
   } // namespace
 
@@ -291,7 +312,7 @@ namespace hyperelastic
 
     min_J = std::numeric_limits<double>::max();
     for_each_cell(u, [&](const auto &cell, CellData<dim> &data) {
-      const unsigned int index = cell->active_cell_index();
+      const unsigned int index  = cell->active_cell_index();
       double             volume = 0.;
       Tensor<2, 3>       sigma;
       for (unsigned int q = 0; q < data.F.size(); ++q)
@@ -312,8 +333,8 @@ namespace hyperelastic
       fields.J[index] /= volume;
       fields.energy_density[index] /= volume;
       sigma /= volume;
-      const unsigned int pairs[6][2] = {{0, 0}, {1, 1}, {2, 2},
-                                        {0, 1}, {0, 2}, {1, 2}};
+      const unsigned int pairs[6][2] = {
+        {0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
       for (unsigned int c = 0; c < 6; ++c)
         fields.cauchy[c][index] = sigma[pairs[c][0]][pairs[c][1]];
       const Tensor<2, 3> dev =

@@ -12,13 +12,14 @@ namespace hyperelastic
   std::string
   exception_message(const std::exception &e)
   {
-    if (const auto *dealii_exception = dynamic_cast<const dealii::ExceptionBase *>(&e))
+    if (const auto *dealii_exception =
+          dynamic_cast<const dealii::ExceptionBase *>(&e))
       {
         std::ostringstream info;
         dealii_exception->print_info(info);
         std::string text = info.str();
         // print_info indents every line; strip that for a compact message.
-        std::string out;
+        std::string        out;
         std::istringstream lines(text);
         for (std::string line; std::getline(lines, line);)
           {
@@ -27,7 +28,8 @@ namespace hyperelastic
               continue;
             out += (out.empty() ? "" : "\n") + line.substr(first);
           }
-        if (out.rfind("The name and call sequence of the exception was:", 0) == 0)
+        if (out.rfind("The name and call sequence of the exception was:", 0) ==
+            0)
           out = e.what();
         return out.empty() ? std::string(e.what()) : out;
       }
@@ -35,8 +37,9 @@ namespace hyperelastic
   }
 
   void
-  throw_input_error_if_any(const bool failed, const std::string &message,
-                           const MPI_Comm comm)
+  throw_input_error_if_any(const bool         failed,
+                           const std::string &message,
+                           const MPI_Comm     comm)
   {
     const int any = dealii::Utilities::MPI::max(failed ? 1 : 0, comm);
     if (any != 0)
@@ -74,7 +77,8 @@ namespace hyperelastic
     catch (...)
       {
         std::cerr << "\nhyperelastic: unknown exception on MPI rank "
-                  << dealii::Utilities::MPI::this_mpi_process(comm) << std::endl;
+                  << dealii::Utilities::MPI::this_mpi_process(comm)
+                  << std::endl;
       }
     // The failure may be local to this rank: abort the whole job rather than
     // leave other ranks blocked in a collective operation.

@@ -14,8 +14,9 @@ namespace hyperelastic
   using namespace dealii;
 
   LinearSolver::LinearSolver(const LinearSolverParameters &parameters)
-    : parameters(parameters)
-  {}
+      : parameters(parameters)
+  {
+  }
 
   void
   LinearSolver::set_near_null_space(std::vector<double> modes,
@@ -29,12 +30,12 @@ namespace hyperelastic
 
   unsigned int
   LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
-                      TrilinosWrappers::MPI::Vector &       x,
-                      const TrilinosWrappers::MPI::Vector & b)
+                      TrilinosWrappers::MPI::Vector        &x,
+                      const TrilinosWrappers::MPI::Vector  &b)
   {
     if (parameters.type == LinearSolverType::direct)
       {
-        SolverControl control(1, 0);
+        SolverControl                                  control(1, 0);
         TrilinosWrappers::SolverDirect::AdditionalData data(
           false, parameters.direct_solver);
         TrilinosWrappers::SolverDirect direct(control, data);
@@ -44,7 +45,8 @@ namespace hyperelastic
           }
         catch (const std::exception &e)
           {
-            throw ConvergenceFailure("direct solver " + parameters.direct_solver +
+            throw ConvergenceFailure("direct solver " +
+                                     parameters.direct_solver +
                                      " failed: " + exception_message(e));
           }
         return 0;
@@ -57,21 +59,22 @@ namespace hyperelastic
     data.smoother_sweeps       = parameters.smoother_sweeps;
     data.smoother_type         = "Chebyshev";
     data.coarse_type           = "Amesos-KLU";
-    Teuchos::ParameterList               ml_list;
-    std::unique_ptr<Epetra_MultiVector>  unused_modes;
+    Teuchos::ParameterList              ml_list;
+    std::unique_ptr<Epetra_MultiVector> unused_modes;
     data.set_parameters(ml_list, unused_modes, A);
     ml_list.set("PDE equations", static_cast<int>(n_components));
     if (n_modes > 0)
       {
         AssertDimension(null_space.size(),
-                        n_modes * A.local_range().second - n_modes * A.local_range().first);
+                        n_modes * A.local_range().second -
+                          n_modes * A.local_range().first);
         ml_list.set("null space: type", "pre-computed");
         ml_list.set("null space: dimension", static_cast<int>(n_modes));
         ml_list.set("null space: vectors", null_space.data());
       }
     amg.initialize(A, ml_list);
 
-    SolverControl control(parameters.max_iterations,
+    SolverControl                           control(parameters.max_iterations,
                           parameters.relative_tolerance * b.l2_norm());
     SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
     try

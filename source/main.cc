@@ -27,8 +27,8 @@ main(int argc, char *argv[])
 {
   using namespace hyperelastic;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm comm = MPI_COMM_WORLD;
-  const bool     root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+  const MPI_Comm                           comm = MPI_COMM_WORLD;
+  const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
 
   const std::string argument = argc == 2 ? argv[1] : "";
   if (argument == "--help" || argument == "-h")

@@ -59,8 +59,8 @@ namespace hyperelastic
                            std::to_string(dim) + ": " + exception_message(e));
         }
       if (tria.n_active_cells() == 0)
-        throw InputError("mesh file '" + file_name + "' has no cells of dimension " +
-                         std::to_string(dim));
+        throw InputError("mesh file '" + file_name +
+                         "' has no cells of dimension " + std::to_string(dim));
       for (const auto &cell : tria.active_cell_iterators())
         if (!cell->reference_cell().is_simplex())
           throw InputError("mesh file '" + file_name + "': cell " +
@@ -72,7 +72,7 @@ namespace hyperelastic
 
   template <int dim>
   std::set<types::boundary_id>
-  create_mesh(const MeshParameters &                       parameters,
+  create_mesh(const MeshParameters                           &parameters,
               parallel::fullydistributed::Triangulation<dim> &tria)
   {
     const MPI_Comm comm = tria.get_communicator();
@@ -92,7 +92,8 @@ namespace hyperelastic
           }
         GridGenerator::subdivided_hyper_rectangle_with_simplices(serial,
                                                                  repetitions,
-                                                                 p1, p2);
+                                                                 p1,
+                                                                 p2);
         set_box_boundary_ids(serial);
       }
     else
@@ -104,11 +105,11 @@ namespace hyperelastic
 
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     if (n_ranks > 1)
-      GridTools::partition_triangulation(n_ranks, serial,
+      GridTools::partition_triangulation(n_ranks,
+                                         serial,
                                          SparsityTools::Partitioner::metis);
-    const auto description =
-      TriangulationDescription::Utilities::create_description_from_triangulation(
-        serial, comm);
+    const auto description = TriangulationDescription::Utilities::
+      create_description_from_triangulation(serial, comm);
     tria.create_triangulation(description);
     return std::set<types::boundary_id>(ids.begin(), ids.end());
   }
@@ -118,7 +119,9 @@ namespace hyperelastic
   template void
   set_box_boundary_ids(Triangulation<3> &);
   template std::set<types::boundary_id>
-  create_mesh(const MeshParameters &, parallel::fullydistributed::Triangulation<2> &);
+  create_mesh(const MeshParameters &,
+              parallel::fullydistributed::Triangulation<2> &);
   template std::set<types::boundary_id>
-  create_mesh(const MeshParameters &, parallel::fullydistributed::Triangulation<3> &);
+  create_mesh(const MeshParameters &,
+              parallel::fullydistributed::Triangulation<3> &);
 } // namespace hyperelastic

@@ -17,13 +17,14 @@ namespace hyperelastic
     return n;
   }
 
-  NewtonSolver::NewtonSolver(const NewtonParameters &   parameters,
+  NewtonSolver::NewtonSolver(const NewtonParameters    &parameters,
                              dealii::ConditionalOStream pcout,
                              const bool                 verbose)
-    : parameters(parameters)
-    , pcout(pcout)
-    , verbose(verbose)
-  {}
+      : parameters(parameters)
+      , pcout(pcout)
+      , verbose(verbose)
+  {
+  }
 
   namespace
   {
@@ -31,9 +32,10 @@ namespace hyperelastic
     format_row(const NewtonIteration &row)
     {
       std::ostringstream s;
-      s << std::setw(8) << row.iteration << std::scientific << std::setprecision(3)
-        << std::setw(14) << row.residual << std::setw(14) << row.update
-        << std::setw(10) << row.linear_iterations;
+      s << std::setw(8) << row.iteration << std::scientific
+        << std::setprecision(3) << std::setw(14) << row.residual
+        << std::setw(14) << row.update << std::setw(10)
+        << row.linear_iterations;
       return s.str();
     }
 
@@ -67,7 +69,8 @@ namespace hyperelastic
         if (!std::isfinite(norms.residual) || !std::isfinite(update))
           throw ConvergenceFailure(
             "Newton produced a non-finite residual or update (an element may "
-            "have inverted with a model undefined there)" + history_text(result));
+            "have inverted with a model undefined there)" +
+            history_text(result));
 
         // Converged when the residual is negligible in absolute terms, or
         // small relative to the forces in play and the last update is small
@@ -75,7 +78,8 @@ namespace hyperelastic
         const bool absolutely_small =
           norms.residual <= parameters.absolute_residual_tolerance;
         const bool relatively_small =
-          norms.residual <= parameters.relative_residual_tolerance * norms.scale &&
+          norms.residual <=
+            parameters.relative_residual_tolerance * norms.scale &&
           update <= parameters.update_tolerance * system.solution_norm();
         if (absolutely_small || relatively_small)
           return result;

@@ -17,8 +17,8 @@ namespace hyperelastic
   template <int dim>
   OutputWriter<dim>::OutputWriter(const OutputParameters &parameters,
                                   const MPI_Comm          comm)
-    : parameters(parameters)
-    , comm(comm)
+      : parameters(parameters)
+      , comm(comm)
   {
     std::string error;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -49,30 +49,38 @@ namespace hyperelastic
 
   template <int dim>
   void
-  OutputWriter<dim>::write_fields(const unsigned int                   step,
-                                  const double                         load_factor,
-                                  const DoFHandler<dim> &              dof_handler,
-                                  const Mapping<dim> &                 mapping,
+  OutputWriter<dim>::write_fields(const unsigned int     step,
+                                  const double           load_factor,
+                                  const DoFHandler<dim> &dof_handler,
+                                  const Mapping<dim>    &mapping,
                                   const TrilinosWrappers::MPI::Vector &u,
-                                  const CellFields &                   fields)
+                                  const CellFields                    &fields)
   {
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(
-      u, std::vector<std::string>(dim, "displacement"),
+      u,
+      std::vector<std::string>(dim, "displacement"),
       DataOut<dim>::type_dof_data,
       std::vector<DataComponentInterpretation::DataComponentInterpretation>(
         dim, DataComponentInterpretation::component_is_part_of_vector));
     data_out.add_data_vector(fields.J, "J", DataOut<dim>::type_cell_data);
-    data_out.add_data_vector(fields.energy_density, "energy_density",
+    data_out.add_data_vector(fields.energy_density,
+                             "energy_density",
                              DataOut<dim>::type_cell_data);
-    data_out.add_data_vector(fields.von_mises, "von_Mises_stress",
+    data_out.add_data_vector(fields.von_mises,
+                             "von_Mises_stress",
                              DataOut<dim>::type_cell_data);
-    const char *names[6] = {"cauchy_xx", "cauchy_yy", "cauchy_zz",
-                            "cauchy_xy", "cauchy_xz", "cauchy_yz"};
+    const char *names[6] = {"cauchy_xx",
+                            "cauchy_yy",
+                            "cauchy_zz",
+                            "cauchy_xy",
+                            "cauchy_xz",
+                            "cauchy_yz"};
     for (unsigned int c = 0; c < 6; ++c)
       if (dim == 3 || c < 4)
-        data_out.add_data_vector(fields.cauchy[c], names[c],
+        data_out.add_data_vector(fields.cauchy[c],
+                                 names[c],
                                  DataOut<dim>::type_cell_data);
     Vector<float> rank(dof_handler.get_triangulation().n_active_cells());
     rank = static_cast<float>(Utilities::MPI::this_mpi_process(comm));

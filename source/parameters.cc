@@ -11,25 +11,27 @@
 
 namespace hyperelastic
 {
+  using dealii::Patterns::Anything;
   using dealii::Patterns::Bool;
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
   using dealii::Patterns::List;
-  using dealii::Patterns::Anything;
-  using dealii::Patterns::Selection;
   using dealii::Patterns::MultipleSelection;
+  using dealii::Patterns::Selection;
 
   namespace
   {
     [[noreturn]] void
-    reject(const std::string &entry, const std::string &value,
+    reject(const std::string &entry,
+           const std::string &value,
            const std::string &why)
     {
       throw InputError("scene entry '" + entry + "' = '" + value + "': " + why);
     }
 
     double
-    get_finite(ParameterHandler &prm, const std::string &section,
+    get_finite(ParameterHandler  &prm,
+               const std::string &section,
                const std::string &name)
     {
       const double v = prm.get_double(name);
@@ -59,10 +61,14 @@ namespace hyperelastic
   ProblemParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Problem");
-    prm.declare_entry("Dimension", "3", Integer(2, 3),
+    prm.declare_entry("Dimension",
+                      "3",
+                      Integer(2, 3),
                       "Space dimension: 2 (plane strain, triangles) or 3 "
                       "(tetrahedra).");
-    prm.declare_entry("Finite element degree", "1", Integer(1, 2),
+    prm.declare_entry("Finite element degree",
+                      "1",
+                      Integer(1, 2),
                       "Polynomial degree of the simplex Lagrange element: 1 "
                       "(P1, linear) or 2 (P2, quadratic).");
     prm.leave_subsection();
@@ -83,23 +89,35 @@ namespace hyperelastic
   {
     prm.enter_subsection("Mesh");
     prm.declare_entry(
-      "Source", "box", Selection("box|file"),
+      "Source",
+      "box",
+      Selection("box|file"),
       "'box': a generated box of simplices (rectangle in 2D) with boundary ids "
       "0/1 on the faces x = min/max, 2/3 on y = min/max, 4/5 on z = min/max. "
       "'file': a gmsh .msh file (format 2 or 4, ASCII) whose physical tags on "
       "boundary faces become boundary ids.");
-    prm.declare_entry("File", "", Anything(),
+    prm.declare_entry("File",
+                      "",
+                      Anything(),
                       "Mesh file for Source = file; a relative path is read "
                       "relative to the folder of the scene file.");
-    prm.declare_entry("Lower corner", "0, 0, 0", List(Double(), 2, 3),
+    prm.declare_entry("Lower corner",
+                      "0, 0, 0",
+                      List(Double(), 2, 3),
                       "Box: coordinates of the lower corner (dim values).");
-    prm.declare_entry("Upper corner", "1, 1, 1", List(Double(), 2, 3),
+    prm.declare_entry("Upper corner",
+                      "1, 1, 1",
+                      List(Double(), 2, 3),
                       "Box: coordinates of the upper corner (dim values).");
-    prm.declare_entry("Subdivisions", "1, 1, 1", List(Integer(1), 2, 3),
+    prm.declare_entry("Subdivisions",
+                      "1, 1, 1",
+                      List(Integer(1), 2, 3),
                       "Box: number of cells per direction (dim values); each "
                       "square is split into 2 triangles, each cube into 5 "
                       "tetrahedra.");
-    prm.declare_entry("Global refinements", "0", Integer(0, 10),
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Integer(0, 10),
                       "Uniform refinements of the mesh before it is "
                       "partitioned (each one multiplies the cell count by "
                       "2^dim).");
@@ -119,11 +137,14 @@ namespace hyperelastic
         if (file[0] != '/')
           file = scene_folder + "/" + file;
       }
-    for (const auto &v : dealii::Utilities::split_string_list(prm.get("Lower corner")))
+    for (const auto &v :
+         dealii::Utilities::split_string_list(prm.get("Lower corner")))
       lower_corner.push_back(dealii::Utilities::string_to_double(v));
-    for (const auto &v : dealii::Utilities::split_string_list(prm.get("Upper corner")))
+    for (const auto &v :
+         dealii::Utilities::split_string_list(prm.get("Upper corner")))
       upper_corner.push_back(dealii::Utilities::string_to_double(v));
-    for (const auto &v : dealii::Utilities::split_string_list(prm.get("Subdivisions")))
+    for (const auto &v :
+         dealii::Utilities::split_string_list(prm.get("Subdivisions")))
       subdivisions.push_back(dealii::Utilities::string_to_int(v));
     global_refinements = prm.get_integer("Global refinements");
     prm.leave_subsection();
@@ -134,21 +155,33 @@ namespace hyperelastic
   MaterialParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    prm.declare_entry("Model", "neo-Hookean", Selection(material_model_names()),
+    prm.declare_entry("Model",
+                      "neo-Hookean",
+                      Selection(material_model_names()),
                       "Constitutive model: 'linear elastic' (small strain), "
                       "'St. Venant-Kirchhoff', 'corotational' (ARAP when "
                       "lambda = 0) or 'neo-Hookean'.");
-    prm.declare_entry("Elastic constants", "Young's modulus and Poisson's ratio",
+    prm.declare_entry("Elastic constants",
+                      "Young's modulus and Poisson's ratio",
                       Selection("Young's modulus and Poisson's ratio|Lame"),
                       "Which pair of constants the scene gives.");
-    prm.declare_entry("Young's modulus", "1", Double(),
-                      "E > 0 (used with 'Young's modulus and Poisson's ratio').");
-    prm.declare_entry("Poisson's ratio", "0.3", Double(),
+    prm.declare_entry(
+      "Young's modulus",
+      "1",
+      Double(),
+      "E > 0 (used with 'Young's modulus and Poisson's ratio').");
+    prm.declare_entry("Poisson's ratio",
+                      "0.3",
+                      Double(),
                       "-1 < nu < 0.5 (used with 'Young's modulus and Poisson's "
                       "ratio').");
-    prm.declare_entry("Shear modulus", "1", Double(),
+    prm.declare_entry("Shear modulus",
+                      "1",
+                      Double(),
                       "Lame mu > 0 (used with 'Lame').");
-    prm.declare_entry("Lame lambda", "1", Double(),
+    prm.declare_entry("Lame lambda",
+                      "1",
+                      Double(),
                       "Lame lambda, with lambda + 2 mu / 3 > 0 (used with "
                       "'Lame').");
     prm.leave_subsection();
@@ -164,10 +197,12 @@ namespace hyperelastic
         lame.mu     = get_finite(prm, "Material", "Shear modulus");
         lame.lambda = get_finite(prm, "Material", "Lame lambda");
         if (!(lame.mu > 0.))
-          reject("Material/Shear modulus", prm.get("Shear modulus"),
+          reject("Material/Shear modulus",
+                 prm.get("Shear modulus"),
                  "must be positive");
         if (!(lame.lambda + 2. * lame.mu / 3. > 0.))
-          reject("Material/Lame lambda", prm.get("Lame lambda"),
+          reject("Material/Lame lambda",
+                 prm.get("Lame lambda"),
                  "the bulk modulus lambda + 2 mu / 3 must be positive");
       }
     else
@@ -175,10 +210,12 @@ namespace hyperelastic
         const double E  = get_finite(prm, "Material", "Young's modulus");
         const double nu = get_finite(prm, "Material", "Poisson's ratio");
         if (!(E > 0.))
-          reject("Material/Young's modulus", prm.get("Young's modulus"),
+          reject("Material/Young's modulus",
+                 prm.get("Young's modulus"),
                  "must be positive");
         if (!(nu > -1. && nu < 0.5))
-          reject("Material/Poisson's ratio", prm.get("Poisson's ratio"),
+          reject("Material/Poisson's ratio",
+                 prm.get("Poisson's ratio"),
                  "must lie strictly between -1 and 0.5");
         lame = LameParameters::from_young_poisson(E, nu);
       }
@@ -190,14 +227,20 @@ namespace hyperelastic
   LoadingParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Loading");
-    prm.declare_entry("Number of load steps", "10", Integer(1),
+    prm.declare_entry("Number of load steps",
+                      "10",
+                      Integer(1),
                       "The load factor t goes from 0 to 1 in this many equal "
                       "steps; every expression below may use t.");
-    prm.declare_entry("Body force", "", Anything(),
+    prm.declare_entry("Body force",
+                      "",
+                      Anything(),
                       "Force per unit reference volume: dim expressions of "
                       "x, y, (z,) t separated by ';' (for example '0; 0; "
                       "-0.1*t'). Empty: no body force.");
-    prm.declare_entry("Constants", "", Anything(),
+    prm.declare_entry("Constants",
+                      "",
+                      Anything(),
                       "Named constants usable in every expression, as "
                       "'name = value' pairs separated by ',' (for example "
                       "'L = 10, angle = 1.5708'). pi is always defined.");
@@ -206,14 +249,20 @@ namespace hyperelastic
     for (unsigned int i = 1; i <= max_dirichlet; ++i)
       {
         prm.enter_subsection("Dirichlet " + std::to_string(i));
-        prm.declare_entry("Boundary id", "-1", Integer(-1),
+        prm.declare_entry("Boundary id",
+                          "-1",
+                          Integer(-1),
                           "Boundary id on which the displacement is "
                           "prescribed; -1 leaves this slot unused.");
-        prm.declare_entry("Components", "x, y, z", MultipleSelection("x|y|z"),
+        prm.declare_entry("Components",
+                          "x, y, z",
+                          MultipleSelection("x|y|z"),
                           "Displacement components that are prescribed; the "
                           "others stay free (so 'x' on a face x = const is a "
                           "symmetry roller).");
-        prm.declare_entry("Displacement", "0; 0; 0", Anything(),
+        prm.declare_entry("Displacement",
+                          "0; 0; 0",
+                          Anything(),
                           "One expression of x, y, (z,) t per listed "
                           "component, separated by ';': the displacement of "
                           "the reference point (x, y, z) at load factor t.");
@@ -222,10 +271,14 @@ namespace hyperelastic
     for (unsigned int i = 1; i <= max_tractions; ++i)
       {
         prm.enter_subsection("Traction " + std::to_string(i));
-        prm.declare_entry("Boundary id", "-1", Integer(-1),
+        prm.declare_entry("Boundary id",
+                          "-1",
+                          Integer(-1),
                           "Boundary id loaded by this traction; -1 leaves this "
                           "slot unused.");
-        prm.declare_entry("Traction", "0; 0; 0", Anything(),
+        prm.declare_entry("Traction",
+                          "0; 0; 0",
+                          Anything(),
                           "Force per unit reference area (a nominal, "
                           "dead-load traction): dim expressions of x, y, (z,) "
                           "t separated by ';'.");
@@ -237,23 +290,26 @@ namespace hyperelastic
   LoadingParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Loading");
-    n_load_steps = prm.get_integer("Number of load steps");
-    body_force   = split_expressions(prm.get("Body force"));
+    n_load_steps                     = prm.get_integer("Number of load steps");
+    body_force                       = split_expressions(prm.get("Body force"));
     const std::string constants_text = prm.get("Constants");
     prm.leave_subsection();
 
-    for (const auto &pair : dealii::Utilities::split_string_list(constants_text, ','))
+    for (const auto &pair :
+         dealii::Utilities::split_string_list(constants_text, ','))
       {
-        const auto eq = pair.find('=');
+        const auto        eq = pair.find('=');
         const std::string name =
-          eq == std::string::npos ? "" : dealii::Utilities::trim(pair.substr(0, eq));
-        double value = 0;
+          eq == std::string::npos ? ""
+                                  : dealii::Utilities::trim(pair.substr(0, eq));
+        double             value = 0;
         std::istringstream value_stream(
           eq == std::string::npos ? "" : pair.substr(eq + 1));
         value_stream >> value;
         if (name.empty() || value_stream.fail() || !std::isfinite(value) ||
             !(value_stream >> std::ws).eof())
-          reject("Loading/Constants", constants_text,
+          reject("Loading/Constants",
+                 constants_text,
                  "expected 'name = number' pairs separated by ',', got '" +
                    pair + "'");
         constants[name] = value;
@@ -274,12 +330,15 @@ namespace hyperelastic
               c.components.push_back(component_index(name));
             c.expressions = split_expressions(prm.get("Displacement"));
             if (c.components.empty())
-              reject(section + "/Components", prm.get("Components"),
+              reject(section + "/Components",
+                     prm.get("Components"),
                      "list at least one of x, y, z");
             if (c.expressions.size() != c.components.size())
-              reject(section + "/Displacement", prm.get("Displacement"),
+              reject(section + "/Displacement",
+                     prm.get("Displacement"),
                      "needs one expression per listed component (" +
-                       std::to_string(c.components.size()) + "), separated by ';'");
+                       std::to_string(c.components.size()) +
+                       "), separated by ';'");
             dirichlet.push_back(c);
           }
         prm.leave_subsection();
@@ -306,17 +365,25 @@ namespace hyperelastic
   NewtonParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Newton");
-    prm.declare_entry("Max iterations", "20", Integer(1),
+    prm.declare_entry("Max iterations",
+                      "20",
+                      Integer(1),
                       "Newton iterations allowed per load step before the run "
                       "stops with a convergence failure.");
-    prm.declare_entry("Absolute residual tolerance", "1e-12", Double(0),
+    prm.declare_entry("Absolute residual tolerance",
+                      "1e-12",
+                      Double(0),
                       "Converged when the l2 norm of the residual on the free "
                       "degrees of freedom is below this (force units), or ...");
-    prm.declare_entry("Relative residual tolerance", "1e-10", Double(0),
+    prm.declare_entry("Relative residual tolerance",
+                      "1e-10",
+                      Double(0),
                       "... or below this times the larger of the l2 norms of "
                       "the internal and the external force vectors (all "
                       "degrees of freedom, so reactions count), and ...");
-    prm.declare_entry("Update tolerance", "1e-8", Double(0),
+    prm.declare_entry("Update tolerance",
+                      "1e-8",
+                      Double(0),
                       "... the last Newton update is below this times the "
                       "l2 norm of the displacement vector.");
     prm.leave_subsection();
@@ -331,7 +398,8 @@ namespace hyperelastic
     relative_residual_tolerance = prm.get_double("Relative residual tolerance");
     update_tolerance            = prm.get_double("Update tolerance");
     if (absolute_residual_tolerance == 0. && relative_residual_tolerance == 0.)
-      reject("Newton/Relative residual tolerance", "0",
+      reject("Newton/Relative residual tolerance",
+             "0",
              "absolute and relative residual tolerance cannot both be zero");
     prm.leave_subsection();
   }
@@ -341,22 +409,35 @@ namespace hyperelastic
   LinearSolverParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    prm.declare_entry("Type", "CG with AMG", Selection("CG with AMG|direct"),
+    prm.declare_entry("Type",
+                      "CG with AMG",
+                      Selection("CG with AMG|direct"),
                       "'CG with AMG': conjugate gradients preconditioned by "
                       "Trilinos ML algebraic multigrid with all rigid-body "
                       "modes (scales to large meshes). 'direct': sparse LU "
                       "(robust, for small problems).");
-    prm.declare_entry("Relative tolerance", "1e-8", Double(0, 1),
+    prm.declare_entry("Relative tolerance",
+                      "1e-8",
+                      Double(0, 1),
                       "CG stops when the residual is reduced by this factor.");
-    prm.declare_entry("Max iterations", "1000", Integer(1),
-                      "CG iterations before a linear-solver failure is reported.");
-    prm.declare_entry("Direct solver", "Amesos_Klu",
-                      Selection("Amesos_Klu|Amesos_Umfpack|Amesos_Mumps|Amesos_Superludist"),
-                      "Amesos solver used by Type = direct.");
-    prm.declare_entry("AMG aggregation threshold", "1e-4", Double(0, 1),
+    prm.declare_entry(
+      "Max iterations",
+      "1000",
+      Integer(1),
+      "CG iterations before a linear-solver failure is reported.");
+    prm.declare_entry(
+      "Direct solver",
+      "Amesos_Klu",
+      Selection("Amesos_Klu|Amesos_Umfpack|Amesos_Mumps|Amesos_Superludist"),
+      "Amesos solver used by Type = direct.");
+    prm.declare_entry("AMG aggregation threshold",
+                      "1e-4",
+                      Double(0, 1),
                       "ML drops matrix entries below this (relative) when "
                       "forming aggregates.");
-    prm.declare_entry("AMG smoother sweeps", "2", Integer(1, 10),
+    prm.declare_entry("AMG smoother sweeps",
+                      "2",
+                      Integer(1, 10),
                       "Degree of the Chebyshev smoother on each level.");
     prm.leave_subsection();
   }
@@ -365,11 +446,12 @@ namespace hyperelastic
   LinearSolverParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    type = prm.get("Type") == "direct" ? LinearSolverType::direct :
-                                         LinearSolverType::cg_amg;
-    relative_tolerance    = prm.get_double("Relative tolerance");
+    type               = prm.get("Type") == "direct" ? LinearSolverType::direct
+                                                     : LinearSolverType::cg_amg;
+    relative_tolerance = prm.get_double("Relative tolerance");
     if (!(relative_tolerance > 0.))
-      reject("Linear solver/Relative tolerance", prm.get("Relative tolerance"),
+      reject("Linear solver/Relative tolerance",
+             prm.get("Relative tolerance"),
              "must be positive");
     max_iterations        = prm.get_integer("Max iterations");
     direct_solver         = prm.get("Direct solver");
@@ -383,17 +465,25 @@ namespace hyperelastic
   OutputParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    prm.declare_entry("Directory", "output", Anything(),
+    prm.declare_entry("Directory",
+                      "output",
+                      Anything(),
                       "Folder for all output (created if missing; relative to "
                       "the working directory).");
-    prm.declare_entry("Base name", "solution", Anything(),
+    prm.declare_entry("Base name",
+                      "solution",
+                      Anything(),
                       "Prefix of the output files: <base>.pvd, "
                       "<base>_<step>.pvtu, <base>_<step>.<rank>.vtu and "
                       "<base>.csv.");
-    prm.declare_entry("Write VTU", "true", Bool(),
+    prm.declare_entry("Write VTU",
+                      "true",
+                      Bool(),
                       "Write the ParaView files at every load step (the CSV "
                       "summary is always written).");
-    prm.declare_entry("Verbose", "true", Bool(),
+    prm.declare_entry("Verbose",
+                      "true",
+                      Bool(),
                       "Print the Newton table of every load step.");
     prm.leave_subsection();
   }
@@ -438,41 +528,50 @@ namespace hyperelastic
     output.parse(prm);
 
     // Checks that need the dimension.
-    const unsigned int dim  = problem.dimension;
-    const auto         size = [](const auto &v) { return std::to_string(v.size()); };
+    const unsigned int dim = problem.dimension;
+    const auto size = [](const auto &v) { return std::to_string(v.size()); };
     if (mesh.source == MeshSource::box)
       {
         if (mesh.lower_corner.size() != dim)
-          reject("Mesh/Lower corner", size(mesh.lower_corner) + " values",
+          reject("Mesh/Lower corner",
+                 size(mesh.lower_corner) + " values",
                  "needs " + std::to_string(dim) + " values for dimension " +
                    std::to_string(dim));
         if (mesh.upper_corner.size() != dim)
-          reject("Mesh/Upper corner", size(mesh.upper_corner) + " values",
+          reject("Mesh/Upper corner",
+                 size(mesh.upper_corner) + " values",
                  "needs " + std::to_string(dim) + " values");
         if (mesh.subdivisions.size() != dim)
-          reject("Mesh/Subdivisions", size(mesh.subdivisions) + " values",
+          reject("Mesh/Subdivisions",
+                 size(mesh.subdivisions) + " values",
                  "needs " + std::to_string(dim) + " values");
         for (unsigned int d = 0; d < dim; ++d)
           if (!(mesh.upper_corner[d] > mesh.lower_corner[d]))
-            reject("Mesh/Upper corner", std::to_string(mesh.upper_corner[d]),
+            reject("Mesh/Upper corner",
+                   std::to_string(mesh.upper_corner[d]),
                    "every coordinate must exceed the lower corner's");
       }
     if (!loading.body_force.empty() && loading.body_force.size() != dim)
-      reject("Loading/Body force", size(loading.body_force) + " expressions",
+      reject("Loading/Body force",
+             size(loading.body_force) + " expressions",
              "needs " + std::to_string(dim) + " expressions separated by ';'");
     for (const auto &c : loading.dirichlet)
       for (const unsigned int component : c.components)
         if (component >= dim)
-          reject(c.subsection + "/Components", "z",
+          reject(c.subsection + "/Components",
+                 "z",
                  "there is no z component in 2D");
     for (const auto &c : loading.tractions)
       if (c.expressions.size() != dim)
-        reject(c.subsection + "/Traction", size(c.expressions) + " expressions",
-               "needs " + std::to_string(dim) + " expressions separated by ';'");
+        reject(c.subsection + "/Traction",
+               size(c.expressions) + " expressions",
+               "needs " + std::to_string(dim) +
+                 " expressions separated by ';'");
     // Two conditions on the same id and component contradict each other.
     for (unsigned int a = 0; a < loading.dirichlet.size(); ++a)
       for (unsigned int b = a + 1; b < loading.dirichlet.size(); ++b)
-        if (loading.dirichlet[a].boundary_id == loading.dirichlet[b].boundary_id)
+        if (loading.dirichlet[a].boundary_id ==
+            loading.dirichlet[b].boundary_id)
           for (const unsigned int ca : loading.dirichlet[a].components)
             for (const unsigned int cb : loading.dirichlet[b].components)
               if (ca == cb)
@@ -491,7 +590,7 @@ namespace hyperelastic
       throw InputError("cannot open scene file '" + scene_file + "'");
     std::stringstream text;
     text << in.rdbuf();
-    const auto slash = scene_file.rfind('/');
+    const auto        slash = scene_file.rfind('/');
     const std::string folder =
       slash == std::string::npos ? "." : scene_file.substr(0, slash);
     try
@@ -502,9 +601,9 @@ namespace hyperelastic
       {
         const std::string what = e.what();
         // Messages from the parser already name the file.
-        throw InputError(what.find(scene_file) != std::string::npos ?
-                           what :
-                           "scene file '" + scene_file + "': " + what);
+        throw InputError(what.find(scene_file) != std::string::npos
+                           ? what
+                           : "scene file '" + scene_file + "': " + what);
       }
   }
 

@@ -17,19 +17,22 @@ namespace hyperelastic
   using namespace dealii;
 
   template <int dim>
-  Problem<dim>::Problem(const Parameters &parameters, const MPI_Comm comm,
-                        const bool print)
-    : parameters(parameters)
-    , comm(comm)
-    , pcout(std::cout, print && Utilities::MPI::this_mpi_process(comm) == 0)
-    , timer(comm, pcout, print ? TimerOutput::summary : TimerOutput::never,
-            TimerOutput::wall_times)
-    , triangulation(comm)
-    , fe(FE_SimplexP<dim>(parameters.problem.fe_degree), dim)
-    , mapping(FE_SimplexP<dim>(1))
-    , dof_handler(triangulation)
-    , linear_solver(parameters.linear_solver)
-    , newton(parameters.newton, pcout, parameters.output.verbose)
+  Problem<dim>::Problem(const Parameters &parameters,
+                        const MPI_Comm    comm,
+                        const bool        print)
+      : parameters(parameters)
+      , comm(comm)
+      , pcout(std::cout, print && Utilities::MPI::this_mpi_process(comm) == 0)
+      , timer(comm,
+              pcout,
+              print ? TimerOutput::summary : TimerOutput::never,
+              TimerOutput::wall_times)
+      , triangulation(comm)
+      , fe(FE_SimplexP<dim>(parameters.problem.fe_degree), dim)
+      , mapping(FE_SimplexP<dim>(1))
+      , dof_handler(triangulation)
+      , linear_solver(parameters.linear_solver)
+      , newton(parameters.newton, pcout, parameters.output.verbose)
   {
     AssertThrow(parameters.problem.dimension == dim,
                 ExcMessage("Problem<dim> built for the wrong dimension"));
@@ -40,10 +43,10 @@ namespace hyperelastic
   Problem<dim>::setup()
   {
     TimerOutput::Scope scope(timer, "mesh and setup");
-    const auto mesh_ids = create_mesh(parameters.mesh, triangulation);
+    const auto         mesh_ids = create_mesh(parameters.mesh, triangulation);
 
-    material = create_material<dim>(parameters.material.model,
-                                    parameters.material.lame);
+    material =
+      create_material<dim>(parameters.material.model, parameters.material.lame);
     boundary_conditions =
       std::make_unique<BoundaryConditions<dim>>(parameters.loading, mesh_ids);
     if (boundary_conditions->dirichlet.empty())
@@ -57,35 +60,49 @@ namespace hyperelastic
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
 
-    boundary_conditions->make_constraints(mapping, dof_handler, relevant_dofs, 0.,
-                                          u_ghosted, true, homogeneous_constraints);
+    boundary_conditions->make_constraints(mapping,
+                                          dof_handler,
+                                          relevant_dofs,
+                                          0.,
+                                          u_ghosted,
+                                          true,
+                                          homogeneous_constraints);
 
     DynamicSparsityPattern dsp(relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, homogeneous_constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    homogeneous_constraints,
+                                    false);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               owned_dofs,
+                                               comm,
+                                               relevant_dofs);
     tangent.reinit(owned_dofs, owned_dofs, dsp, comm);
 
-    for (VectorType *v : {&u, &update, &rhs, &internal_force, &external_force, &residual})
+    for (VectorType *v :
+         {&u, &update, &rhs, &internal_force, &external_force, &residual})
       v->reinit(owned_dofs, comm);
     u_ghosted.reinit(owned_dofs, relevant_dofs, comm);
 
     if (parameters.linear_solver.type == LinearSolverType::cg_amg)
       linear_solver.set_near_null_space(rigid_body_modes(mapping, dof_handler),
-                                        n_rigid_body_modes<dim>, dim);
+                                        n_rigid_body_modes<dim>,
+                                        dim);
 
-    elasticity = std::make_unique<ElasticityOperator<dim>>(dof_handler, mapping,
-                                                           *material,
-                                                           *boundary_conditions);
+    elasticity = std::make_unique<ElasticityOperator<dim>>(
+      dof_handler, mapping, *material, *boundary_conditions);
     writer = std::make_unique<OutputWriter<dim>>(parameters.output, comm);
 
     // Dofs on each Dirichlet boundary id with the components prescribed there
     // (by one or several sections), for the reaction forces. Ghost cells are
-    // visited too: a dof owned here may lie only on a neighbour's boundary face.
+    // visited too: a dof owned here may lie only on a neighbour's boundary
+    // face.
     reaction_ids.clear();
     std::vector<std::vector<bool>> prescribed;
     for (const auto &d : boundary_conditions->dirichlet)
       {
-        const auto it = std::find(reaction_ids.begin(), reaction_ids.end(), d.id);
+        const auto it =
+          std::find(reaction_ids.begin(), reaction_ids.end(), d.id);
         const unsigned int r = it - reaction_ids.begin();
         if (it == reaction_ids.end())
           {
@@ -109,7 +126,8 @@ namespace hyperelastic
                     {
                       const unsigned int c =
                         fe.face_system_to_component_index(i, f).first;
-                      if (owned_dofs.is_element(face_dofs[i]) && prescribed[r][c])
+                      if (owned_dofs.is_element(face_dofs[i]) &&
+                          prescribed[r][c])
                         reaction_dofs[r].emplace_back(face_dofs[i], c);
                     }
                 }
@@ -119,9 +137,8 @@ namespace hyperelastic
         dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
       }
 
-    pcout << "hyperelastic: " << dim << "D"
-          << (dim == 2 ? " plane strain" : "") << ", P"
-          << parameters.problem.fe_degree << " simplices, "
+    pcout << "hyperelastic: " << dim << "D" << (dim == 2 ? " plane strain" : "")
+          << ", P" << parameters.problem.fe_degree << " simplices, "
           << triangulation.n_global_active_cells() << " cells, "
           << dof_handler.n_dofs() << " unknowns, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n"
@@ -129,9 +146,9 @@ namespace hyperelastic
           << " (mu = " << parameters.material.lame.mu
           << ", lambda = " << parameters.material.lame.lambda << ")\n"
           << "linear solver: "
-          << (parameters.linear_solver.type == LinearSolverType::direct ?
-                parameters.linear_solver.direct_solver :
-                std::string("CG with ML AMG (rigid-body near-null space)"))
+          << (parameters.linear_solver.type == LinearSolverType::direct
+                ? parameters.linear_solver.direct_solver
+                : std::string("CG with ML AMG (rigid-body near-null space)"))
           << std::endl;
   }
 
@@ -142,13 +159,20 @@ namespace hyperelastic
   {
     TimerOutput::Scope scope(timer, "assembly");
     if (impose_constraint_increment)
-      boundary_conditions->make_constraints(mapping, dof_handler, relevant_dofs,
-                                            load_factor, u_ghosted, false,
+      boundary_conditions->make_constraints(mapping,
+                                            dof_handler,
+                                            relevant_dofs,
+                                            load_factor,
+                                            u_ghosted,
+                                            false,
                                             constraints);
-    elasticity->assemble_system(u_ghosted, load_factor,
-                                impose_constraint_increment ? constraints :
-                                                              homogeneous_constraints,
-                                tangent, rhs);
+    elasticity->assemble_system(u_ghosted,
+                                load_factor,
+                                impose_constraint_increment
+                                  ? constraints
+                                  : homogeneous_constraints,
+                                tangent,
+                                rhs);
     // Remember which constraints the update must satisfy.
     if (!impose_constraint_increment)
       constraints.copy_from(homogeneous_constraints);
@@ -159,7 +183,7 @@ namespace hyperelastic
   Problem<dim>::solve_linearization()
   {
     TimerOutput::Scope scope(timer, "linear solve");
-    update = 0.;
+    update                        = 0.;
     const unsigned int iterations = linear_solver.solve(tangent, update, rhs);
     constraints.distribute(update);
     return iterations;
@@ -179,7 +203,9 @@ namespace hyperelastic
   Problem<dim>::residual_norms()
   {
     TimerOutput::Scope scope(timer, "residual");
-    elasticity->assemble_forces(u_ghosted, load_factor, internal_force,
+    elasticity->assemble_forces(u_ghosted,
+                                load_factor,
+                                internal_force,
                                 external_force);
     residual = internal_force;
     residual -= external_force;
@@ -202,7 +228,7 @@ namespace hyperelastic
   Problem<dim>::summarize(const unsigned int step, const NewtonResult &result)
   {
     TimerOutput::Scope scope(timer, "postprocessing");
-    StepSummary<dim> s;
+    StepSummary<dim>   s;
     s.step              = step;
     s.load_factor       = load_factor;
     s.newton_iterations = result.iterations();
@@ -217,7 +243,8 @@ namespace hyperelastic
         Tensor<1, dim> force;
         for (const auto &[dof, component] : reaction_dofs[r])
           force[component] += residual(dof);
-        s.reactions.emplace_back(reaction_ids[r], Utilities::MPI::sum(force, comm));
+        s.reactions.emplace_back(reaction_ids[r],
+                                 Utilities::MPI::sum(force, comm));
       }
 
     // Bounding box of the deformed vertices.
@@ -247,8 +274,8 @@ namespace hyperelastic
     if (parameters.output.write_vtu)
       {
         TimerOutput::Scope output_scope(timer, "output");
-        writer->write_fields(step, load_factor, dof_handler, mapping, u_ghosted,
-                             fields);
+        writer->write_fields(
+          step, load_factor, dof_handler, mapping, u_ghosted, fields);
       }
     return s;
   }
@@ -299,7 +326,8 @@ namespace hyperelastic
         pcout << "   converged in " << result.iterations()
               << " Newton iterations (" << result.linear_iterations()
               << " linear); energy " << std::setprecision(10) << summary.energy
-              << ", min J " << summary.min_J << std::setprecision(6) << std::endl;
+              << ", min J " << summary.min_J << std::setprecision(6)
+              << std::endl;
       }
     pcout << "\nSummary per load step: " << writer->csv_file();
     if (parameters.output.write_vtu)

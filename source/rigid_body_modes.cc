@@ -12,13 +12,14 @@ namespace hyperelastic
 
   template <int dim>
   std::vector<double>
-  rigid_body_modes(const Mapping<dim> &mapping, const DoFHandler<dim> &dof_handler)
+  rigid_body_modes(const Mapping<dim>    &mapping,
+                   const DoFHandler<dim> &dof_handler)
   {
-    const FiniteElement<dim> &fe = dof_handler.get_fe();
-    const IndexSet &owned        = dof_handler.locally_owned_dofs();
-    const std::size_t n_owned    = owned.n_elements();
-    const unsigned int n_modes   = n_rigid_body_modes<dim>;
-    std::vector<double> modes(n_modes * n_owned, 0.);
+    const FiniteElement<dim> &fe      = dof_handler.get_fe();
+    const IndexSet           &owned   = dof_handler.locally_owned_dofs();
+    const std::size_t         n_owned = owned.n_elements();
+    const unsigned int        n_modes = n_rigid_body_modes<dim>;
+    std::vector<double>       modes(n_modes * n_owned, 0.);
 
     // Centre of the whole body: average of the local bounding boxes' extremes.
     Point<dim> lower, upper;
@@ -35,13 +36,15 @@ namespace hyperelastic
               lower[d] = std::min(lower[d], cell->vertex(v)[d]);
               upper[d] = std::max(upper[d], cell->vertex(v)[d]);
             }
-    Point<dim> centre;
+    Point<dim>     centre;
     const MPI_Comm comm = dof_handler.get_communicator();
     for (unsigned int d = 0; d < dim; ++d)
       centre[d] = 0.5 * (Utilities::MPI::min(lower[d], comm) +
                          Utilities::MPI::max(upper[d], comm));
 
-    FEValues<dim> fe_values(mapping, fe, Quadrature<dim>(fe.get_unit_support_points()),
+    FEValues<dim>                        fe_values(mapping,
+                            fe,
+                            Quadrature<dim>(fe.get_unit_support_points()),
                             update_quadrature_points);
     std::vector<types::global_dof_index> dofs(fe.dofs_per_cell);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -53,8 +56,8 @@ namespace hyperelastic
             {
               if (!owned.is_element(dofs[i]))
                 continue;
-              const std::size_t  k = owned.index_within_set(dofs[i]);
-              const unsigned int c = fe.system_to_component_index(i).first;
+              const std::size_t    k = owned.index_within_set(dofs[i]);
+              const unsigned int   c = fe.system_to_component_index(i).first;
               const Tensor<1, dim> x = fe_values.quadrature_point(i) - centre;
               modes[c * n_owned + k] = 1.; // translation along c
               if (dim == 2)
@@ -63,9 +66,9 @@ namespace hyperelastic
               else
                 {
                   // rotations about x: (0, -z, y), y: (z, 0, -x), z: (-y, x, 0)
-                  const double rx[3] = {0., -x[dim - 1], x[1]};
-                  const double ry[3] = {x[dim - 1], 0., -x[0]};
-                  const double rz[3] = {-x[1], x[0], 0.};
+                  const double rx[3]     = {0., -x[dim - 1], x[1]};
+                  const double ry[3]     = {x[dim - 1], 0., -x[0]};
+                  const double rz[3]     = {-x[1], x[0], 0.};
                   modes[3 * n_owned + k] = rx[c];
                   modes[4 * n_owned + k] = ry[c];
                   modes[5 * n_owned + k] = rz[c];

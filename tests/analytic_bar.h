@@ -22,7 +22,7 @@ namespace hyperelastic::testing
   {
     for (int i = 0; i < 200 && b - a > 1e-16 * b; ++i)
       {
-        const double m = 0.5 * (a + b);
+        const double m      = 0.5 * (a + b);
         (f(m) > 0. ? b : a) = m;
       }
     return 0.5 * (a + b);
@@ -30,18 +30,24 @@ namespace hyperelastic::testing
 
   /// 3D: F = diag(l1, l2, l2); 2D plane strain: F = diag(l1, l2, 1).
   inline UniaxialState
-  uniaxial(const std::string &model, const int dim, const double l1,
-           const double mu, const double lambda)
+  uniaxial(const std::string &model,
+           const int          dim,
+           const double       l1,
+           const double       mu,
+           const double       lambda)
   {
     const double E  = mu * (3. * lambda + 2. * mu) / (lambda + mu);
     const double nu = lambda / (2. * (lambda + mu));
     if (model == "neo-Hookean")
       {
         // mu (l2^2 - 1) + lambda ln J = 0 with J = l1 l2^(dim - 1).
-        const auto J = [&](double l2) { return l1 * std::pow(l2, dim - 1); };
+        const auto   J  = [&](double l2) { return l1 * std::pow(l2, dim - 1); };
         const double l2 = bisect(
-          [&](double l2) { return mu * (l2 * l2 - 1.) + lambda * std::log(J(l2)); },
-          1e-6, 10.);
+          [&](double l2) {
+            return mu * (l2 * l2 - 1.) + lambda * std::log(J(l2));
+          },
+          1e-6,
+          10.);
         return {l2, mu * (l1 - 1. / l1) + lambda * std::log(J(l2)) / l1};
       }
     if (model == "St. Venant-Kirchhoff")

@@ -35,8 +35,10 @@ namespace
     bool         print;
 
     void
-    check(const std::string &what, const double computed, const double exact,
-          const double scale)
+    check(const std::string &what,
+          const double       computed,
+          const double       exact,
+          const double       scale)
     {
       const double error = std::abs(computed - exact) / scale;
       const bool   ok    = error < tolerance;
@@ -59,25 +61,33 @@ namespace
   }
 
   std::string
-  scene(const int dim, const std::string &model, const std::string &solver,
-        const int degree, const std::string &mesh_file, const std::string &load,
+  scene(const int          dim,
+        const std::string &model,
+        const std::string &solver,
+        const int          degree,
+        const std::string &mesh_file,
+        const std::string &load,
         const std::string &name)
   {
-    std::string text = subsection("Problem", entry("Dimension", std::to_string(dim)) +
-                                               entry("Finite element degree",
-                                                     std::to_string(degree)));
+    std::string text =
+      subsection("Problem",
+                 entry("Dimension", std::to_string(dim)) +
+                   entry("Finite element degree", std::to_string(degree)));
     if (mesh_file.empty())
-      text += subsection(
-        "Mesh", entry("Source", "box") +
-                  entry("Lower corner", dim == 3 ? "0, 0, 0" : "0, 0") +
-                  entry("Upper corner", dim == 3 ? "3, 1, 1" : "3, 1") +
-                  entry("Subdivisions", dim == 3 ? "3, 2, 2" : "3, 2"));
+      text +=
+        subsection("Mesh",
+                   entry("Source", "box") +
+                     entry("Lower corner", dim == 3 ? "0, 0, 0" : "0, 0") +
+                     entry("Upper corner", dim == 3 ? "3, 1, 1" : "3, 1") +
+                     entry("Subdivisions", dim == 3 ? "3, 2, 2" : "3, 2"));
     else
-      text += subsection("Mesh", entry("Source", "file") + entry("File", mesh_file));
-    text += subsection("Material",
-                       entry("Model", model) + entry("Elastic constants", "Lame") +
-                         entry("Shear modulus", std::to_string(mu)) +
-                         entry("Lame lambda", std::to_string(lambda)));
+      text +=
+        subsection("Mesh", entry("Source", "file") + entry("File", mesh_file));
+    text +=
+      subsection("Material",
+                 entry("Model", model) + entry("Elastic constants", "Lame") +
+                   entry("Shear modulus", std::to_string(mu)) +
+                   entry("Lame lambda", std::to_string(lambda)));
     text += subsection("Loading", entry("Number of load steps", "5"));
     // Symmetry rollers on the faces x = 0 (id 0), y = 0 (id 2), z = 0 (id 4).
     const int off = id_offset(mesh_file);
@@ -86,23 +96,29 @@ namespace
       text += dirichlet(3, 4 + off, "z", "0");
     text += load;
     text += tight_solver(solver);
-    text += subsection("Output", entry("Directory", "bar_stretch_output") +
-                                   entry("Base name", name) +
-                                   entry("Write VTU", "false") +
-                                   entry("Verbose", "false"));
+    text +=
+      subsection("Output",
+                 entry("Directory", "bar_stretch_output") +
+                   entry("Base name", name) + entry("Write VTU", "false") +
+                   entry("Verbose", "false"));
     return text;
   }
 
   template <int dim>
   void
-  run_case(Checker &checker, const std::string &model, const std::string &solver,
-           const int degree, const std::string &mesh_file, const bool traction,
-           const double l1_target, const std::string &name)
+  run_case(Checker           &checker,
+           const std::string &model,
+           const std::string &solver,
+           const int          degree,
+           const std::string &mesh_file,
+           const bool         traction,
+           const double       l1_target,
+           const std::string &name)
   {
     const UniaxialState exact = uniaxial(model, dim, l1_target, mu, lambda);
     const double        area  = 1.; // 1 x 1 in 3D, 1 x (unit thickness) in 2D
     std::string         load;
-    Parameters parameters;
+    Parameters          parameters;
     // std::to_string keeps 6 digits: give P11 and the displacement exactly.
     std::ostringstream value;
     value << std::setprecision(17)
@@ -110,10 +126,11 @@ namespace
     const std::string exact_text = value.str();
     const int         off        = id_offset(mesh_file);
     if (traction)
-      load = subsection("Traction 1",
-                        entry("Boundary id", std::to_string(1 + off)) +
-                          entry("Traction", exact_text + "*t; 0" +
-                                              (dim == 3 ? "; 0" : "")));
+      load =
+        subsection("Traction 1",
+                   entry("Boundary id", std::to_string(1 + off)) +
+                     entry("Traction",
+                           exact_text + "*t; 0" + (dim == 3 ? "; 0" : "")));
     else
       load = dirichlet(4, 1 + off, "x", exact_text + "*t");
     parameters.read_from_string(
@@ -130,7 +147,9 @@ namespace
     checker.check("axial stretch l1", l1, l1_target, l1_target);
     for (unsigned int d = 1; d < dim; ++d)
       checker.check("lateral stretch l2 (" + std::string(1, "xyz"[d]) + ")",
-                    s.deformed_max[d] - s.deformed_min[d], exact.l2, exact.l2);
+                    s.deformed_max[d] - s.deformed_min[d],
+                    exact.l2,
+                    exact.l2);
     const double force_scale = std::abs(exact.P11) * area;
     for (const auto &[id, force] : s.reactions)
       {
@@ -141,26 +160,34 @@ namespace
           expected = -exact.P11 * area;
         if (id == types::boundary_id(1 + off))
           expected = exact.P11 * area;
-        checker.check("reaction x on boundary " + std::to_string(id), force[0],
-                      expected, force_scale);
+        checker.check("reaction x on boundary " + std::to_string(id),
+                      force[0],
+                      expected,
+                      force_scale);
         for (unsigned int d = 1; d < dim; ++d)
           checker.check("reaction " + std::string(1, "xyz"[d]) +
                           " on boundary " + std::to_string(id),
-                        force[d], 0., force_scale);
+                        force[d],
+                        0.,
+                        force_scale);
       }
   }
 
   template <int dim>
   void
-  run_all(Checker &checker, const std::string &model, const std::string &solver,
-          const int degree, const std::string &mesh_file, const std::string &tag)
+  run_all(Checker           &checker,
+          const std::string &model,
+          const std::string &solver,
+          const int          degree,
+          const std::string &mesh_file,
+          const std::string &tag)
   {
-    run_case<dim>(checker, model, solver, degree, mesh_file, false, 1.5,
-                  tag + "_stretch");
-    run_case<dim>(checker, model, solver, degree, mesh_file, false, 0.7,
-                  tag + "_compress");
-    run_case<dim>(checker, model, solver, degree, mesh_file, true, 1.3,
-                  tag + "_traction");
+    run_case<dim>(
+      checker, model, solver, degree, mesh_file, false, 1.5, tag + "_stretch");
+    run_case<dim>(
+      checker, model, solver, degree, mesh_file, false, 0.7, tag + "_compress");
+    run_case<dim>(
+      checker, model, solver, degree, mesh_file, true, 1.3, tag + "_traction");
   }
 } // namespace
 
@@ -173,11 +200,11 @@ main(int argc, char *argv[])
       std::cerr << "usage: bar_stretch DIM MODEL SOLVER DEGREE [MESH_FILE]\n";
       return 2;
     }
-  const int         dim       = std::stoi(argv[1]);
-  const std::string model     = argv[2];
-  const std::string solver    = argv[3];
-  const int         degree    = std::stoi(argv[4]);
-  const std::string mesh_file = argc > 5 ? argv[5] : "";
+  const int          dim       = std::stoi(argv[1]);
+  const std::string  model     = argv[2];
+  const std::string  solver    = argv[3];
+  const int          degree    = std::stoi(argv[4]);
+  const std::string  mesh_file = argc > 5 ? argv[5] : "";
   const unsigned int n_ranks =
     dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
 

@@ -30,21 +30,26 @@ namespace
   {
     const bool        three = dim == 3;
     const std::string text =
-      subsection("Problem", entry("Dimension", std::to_string(dim)) +
-                              entry("Finite element degree", "2")) +
-      subsection("Mesh", entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                           entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
-                           entry("Subdivisions", three ? "3, 1, 1" : "3, 1")) +
-      subsection("Material", entry("Model", "linear elastic") +
-                               entry("Young's modulus", "2") +
-                               entry("Poisson's ratio", "0")) +
-      subsection("Loading", entry("Number of load steps", "1") +
-                              entry("Body force", three ? "0.1*t; 0; 0" : "0.1*t; 0")) +
+      subsection("Problem",
+                 entry("Dimension", std::to_string(dim)) +
+                   entry("Finite element degree", "2")) +
+      subsection("Mesh",
+                 entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
+                   entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
+                   entry("Subdivisions", three ? "3, 1, 1" : "3, 1")) +
+      subsection("Material",
+                 entry("Model", "linear elastic") +
+                   entry("Young's modulus", "2") +
+                   entry("Poisson's ratio", "0")) +
+      subsection("Loading",
+                 entry("Number of load steps", "1") +
+                   entry("Body force", three ? "0.1*t; 0; 0" : "0.1*t; 0")) +
       dirichlet(1, 0, "x", "0") + dirichlet(2, 2, "y", "0") +
       (three ? dirichlet(3, 4, "z", "0") : std::string()) + tight_solver("cg") +
-      subsection("Output", entry("Directory", "gravity_bar_output") +
-                             entry("Base name", "gravity_" + std::to_string(dim) + "d") +
-                             entry("Write VTU", "false") + entry("Verbose", "false"));
+      subsection("Output",
+                 entry("Directory", "gravity_bar_output") +
+                   entry("Base name", "gravity_" + std::to_string(dim) + "d") +
+                   entry("Write VTU", "false") + entry("Verbose", "false"));
     Parameters parameters;
     parameters.read_from_string(text);
     Problem<dim> problem(parameters, MPI_COMM_WORLD, false);
@@ -59,7 +64,9 @@ namespace
     const std::vector<Check> checks = {
       {"tip displacement", s.deformed_max[0] - L, b * L * L / (2. * E)},
       {"roller reaction x", s.reactions[0].second[0], -b * L * area},
-      {"total potential energy", s.energy, -b * b * L * L * L * area / (6. * E)}};
+      {"total potential energy",
+       s.energy,
+       -b * b * L * L * L * area / (6. * E)}};
     unsigned int failed = 0;
     for (const auto &c : checks)
       {
@@ -82,11 +89,13 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool print = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  const int  dim   = argc > 1 ? std::stoi(argv[1]) : 3;
+  const bool                               print =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const int    dim    = argc > 1 ? std::stoi(argv[1]) : 3;
   unsigned int failed = 0;
-  const int    status = run_and_report(
-    [&]() { failed = dim == 2 ? run<2>(print) : run<3>(print); }, MPI_COMM_WORLD);
+  const int    status =
+    run_and_report([&]() { failed = dim == 2 ? run<2>(print) : run<3>(print); },
+                   MPI_COMM_WORLD);
   if (print)
     std::cout << (status == 0 ? 3 - failed : 0) << " passed, "
               << (status == 0 ? failed : 3) << " failed" << std::endl;

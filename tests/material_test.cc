@@ -69,7 +69,12 @@ namespace
     {
       char criterion[32];
       std::snprintf(criterion, sizeof(criterion), "<= %.0e", tolerance);
-      record(model, dim, check, measured, criterion, measured <= tolerance,
+      record(model,
+             dim,
+             check,
+             measured,
+             criterion,
+             measured <= tolerance,
              worst_case);
     }
 
@@ -84,7 +89,12 @@ namespace
     {
       char criterion[32];
       std::snprintf(criterion, sizeof(criterion), "> %.0e", threshold);
-      record(model, dim, check, measured, criterion, measured > threshold,
+      record(model,
+             dim,
+             check,
+             measured,
+             criterion,
+             measured > threshold,
              worst_case);
     }
 
@@ -133,8 +143,8 @@ namespace
         for (unsigned int j = 0; j < dim; ++j)
           {
             char entry[32];
-            std::snprintf(entry, sizeof(entry), "%s%.12g", j == 0 ? "" : ", ",
-                          T[i][j]);
+            std::snprintf(
+              entry, sizeof(entry), "%s%.12g", j == 0 ? "" : ", ", T[i][j]);
             text += entry;
           }
         text += "]";
@@ -148,9 +158,10 @@ namespace
   {
   public:
     explicit Worst(const bool track_largest = true)
-      : largest(track_largest)
-      , value(track_largest ? -infinity : infinity)
-    {}
+        : largest(track_largest)
+        , value(track_largest ? -infinity : infinity)
+    {
+    }
 
     template <int dim>
     void
@@ -159,7 +170,8 @@ namespace
       // The first NaN sticks: it must not be hidden by later finite values.
       if (std::isnan(value))
         return;
-      if (std::isnan(measured) || (largest ? measured > value : measured < value))
+      if (std::isnan(measured) ||
+          (largest ? measured > value : measured < value))
         {
           value      = measured;
           worst_case = "F = " + to_string(F);
@@ -178,8 +190,9 @@ namespace
   {
   public:
     explicit RandomTensors(const unsigned int seed)
-      : generator(seed)
-    {}
+        : generator(seed)
+    {
+    }
 
     double
     uniform(const double a, const double b)
@@ -200,34 +213,35 @@ namespace
       Tensor<2, dim> Q;
       if constexpr (dim == 2)
         {
-          const double angle = uniform(-dealii::numbers::PI, dealii::numbers::PI);
-          Q[0][0]            = std::cos(angle);
-          Q[0][1]            = -std::sin(angle);
-          Q[1][0]            = std::sin(angle);
-          Q[1][1]            = std::cos(angle);
+          const double angle =
+            uniform(-dealii::numbers::PI, dealii::numbers::PI);
+          Q[0][0] = std::cos(angle);
+          Q[0][1] = -std::sin(angle);
+          Q[1][0] = std::sin(angle);
+          Q[1][1] = std::cos(angle);
         }
       else
         {
           // A normalised Gaussian quaternion is uniform on SO(3).
           std::normal_distribution<double> normal;
-          double q[4], norm = 0.;
+          double                           q[4], norm = 0.;
           for (double &c : q)
             {
               c = normal(generator);
               norm += c * c;
             }
-          norm = std::sqrt(norm);
+          norm           = std::sqrt(norm);
           const double w = q[0] / norm, x = q[1] / norm, y = q[2] / norm,
                        z = q[3] / norm;
-          Q[0][0] = 1. - 2. * (y * y + z * z);
-          Q[0][1] = 2. * (x * y - w * z);
-          Q[0][2] = 2. * (x * z + w * y);
-          Q[1][0] = 2. * (x * y + w * z);
-          Q[1][1] = 1. - 2. * (x * x + z * z);
-          Q[1][2] = 2. * (y * z - w * x);
-          Q[2][0] = 2. * (x * z - w * y);
-          Q[2][1] = 2. * (y * z + w * x);
-          Q[2][2] = 1. - 2. * (x * x + y * y);
+          Q[0][0]        = 1. - 2. * (y * y + z * z);
+          Q[0][1]        = 2. * (x * y - w * z);
+          Q[0][2]        = 2. * (x * z + w * y);
+          Q[1][0]        = 2. * (x * y + w * z);
+          Q[1][1]        = 1. - 2. * (x * x + z * z);
+          Q[1][2]        = 2. * (y * z - w * x);
+          Q[2][0]        = 2. * (x * z - w * y);
+          Q[2][1]        = 2. * (y * z + w * x);
+          Q[2][2]        = 1. - 2. * (x * x + y * y);
         }
       return Q;
     }
@@ -278,8 +292,9 @@ namespace
         D[a][a] = std::exp(log_s[a]);
       if (J < 0.)
         {
-          const unsigned int flipped = std::min<unsigned int>(
-            dim - 1, static_cast<unsigned int>(uniform(0., dim)));
+          const unsigned int flipped =
+            std::min<unsigned int>(dim - 1,
+                                   static_cast<unsigned int>(uniform(0., dim)));
           D[flipped][flipped] *= -1.;
         }
       return rotation<dim>() * D * rotation<dim>();
@@ -315,7 +330,7 @@ namespace
   Tensor<2, dim>
   diagonal_with_last(const double last)
   {
-    Tensor<2, dim> D = identity<dim>();
+    Tensor<2, dim> D    = identity<dim>();
     D[dim - 1][dim - 1] = last;
     return D;
   }
@@ -326,7 +341,8 @@ namespace
   double
   smallest_singular_value(const Tensor<2, dim> &F)
   {
-    const auto lambda = dealii::eigenvalues(dealii::symmetrize(transpose(F) * F));
+    const auto lambda =
+      dealii::eigenvalues(dealii::symmetrize(transpose(F) * F));
     return std::sqrt(std::max(lambda[dim - 1], 0.));
   }
 
@@ -388,7 +404,7 @@ namespace
   /// both at once for the stiff neo-Hookean energy near J = 0.2.
   template <int dim, typename Function>
   auto
-  central_difference(const Function &      f,
+  central_difference(const Function       &f,
                      const Tensor<2, dim> &F,
                      const Tensor<2, dim> &dF,
                      const double          h)
@@ -409,7 +425,8 @@ namespace
 
   template <int dim>
   Tensor<2, dim>
-  gradient_by_differences(const Material<dim> &material, const Tensor<2, dim> &F)
+  gradient_by_differences(const Material<dim>  &material,
+                          const Tensor<2, dim> &F)
   {
     const auto psi = [&](const Tensor<2, dim> &G) {
       return material.energy_density(G);
@@ -479,7 +496,7 @@ namespace
   model_names()
   {
     std::vector<std::string> names;
-    const std::string        all = material_model_names();
+    const std::string        all   = material_model_names();
     std::size_t              begin = 0;
     for (;;)
       {
@@ -509,10 +526,13 @@ namespace
 
   /// Both ends of the range first, then log-uniform inside it.
   double
-  sample_determinant(RandomTensors &random, const unsigned int s, const double sign)
+  sample_determinant(RandomTensors     &random,
+                     const unsigned int s,
+                     const double       sign)
   {
-    const double magnitude =
-      (s == 0 ? 0.2 : s == 1 ? 3. : random.log_uniform(0.2, 3.));
+    const double magnitude = (s == 0   ? 0.2
+                              : s == 1 ? 3.
+                                       : random.log_uniform(0.2, 3.));
     return sign * magnitude;
   }
 
@@ -523,8 +543,11 @@ namespace
   {
     // E = 1, nu = 0.25 gives mu = lambda = 0.4 exactly.
     const LameParameters quarter = LameParameters::from_young_poisson(1., 0.25);
-    report.below("(Lame parameters)", 0, "from_young_poisson(1, 0.25) = (0.4, 0.4)",
-                 std::max(std::abs(quarter.mu - 0.4), std::abs(quarter.lambda - 0.4)) /
+    report.below("(Lame parameters)",
+                 0,
+                 "from_young_poisson(1, 0.25) = (0.4, 0.4)",
+                 std::max(std::abs(quarter.mu - 0.4),
+                          std::abs(quarter.lambda - 0.4)) /
                    0.4,
                  1e-14);
 
@@ -533,12 +556,15 @@ namespace
       for (const double nu : {-0.5, 0., 0.3, 0.45, 0.499})
         {
           const LameParameters lame = LameParameters::from_young_poisson(E, nu);
-          worst = std::max({worst,
-                            std::abs(lame.young_modulus() - E) / E,
-                            std::abs(lame.poisson_ratio() - nu)});
+          worst                     = std::max({worst,
+                                                std::abs(lame.young_modulus() - E) / E,
+                                                std::abs(lame.poisson_ratio() - nu)});
         }
-    report.below("(Lame parameters)", 0, "(E, nu) -> Lame -> (E, nu) round trip",
-                 worst, 1e-12);
+    report.below("(Lame parameters)",
+                 0,
+                 "(E, nu) -> Lame -> (E, nu) round trip",
+                 worst,
+                 1e-12);
   }
 
   /// linear_elastic_tangent is the reference for checks 1 and 6, so it is
@@ -552,19 +578,24 @@ namespace
     for (const NamedParameters &set : rest_state_parameters())
       for (unsigned int s = 0; s < n_samples; ++s)
         {
-          const Tensor<2, dim> G = random.general<dim>();
-          Tensor<2, dim> expected = set.lame.mu * (G + transpose(G));
+          const Tensor<2, dim> G        = random.general<dim>();
+          Tensor<2, dim>       expected = set.lame.mu * (G + transpose(G));
           for (unsigned int i = 0; i < dim; ++i)
             expected[i][i] += set.lame.lambda * trace(G);
           const Tensor<2, dim> CG =
             contract(linear_elastic_tangent<dim>(set.lame), G);
           worst.update((CG - expected).norm() / expected.norm(), G);
         }
-    report.below("(reference C)", dim, "C:G = 2mu sym(G) + lambda tr(G) I",
-                 worst.value, 1e-14, worst.worst_case);
+    report.below("(reference C)",
+                 dim,
+                 "C:G = 2mu sym(G) + lambda tr(G) I",
+                 worst.value,
+                 1e-14,
+                 worst.worst_case);
   }
 
-  // -------------------------------------------------------------- 1. rest state
+  // -------------------------------------------------------------- 1. rest
+  // state
 
   template <int dim>
   void
@@ -577,8 +608,8 @@ namespace
         Worst psi_error, P_error, A_error, combined_error;
         for (const NamedParameters &set : rest_state_parameters())
           {
-            const auto material = create_material<dim>(name, set.lame);
-            const double scale  = set.lame.mu + set.lame.lambda;
+            const auto   material  = create_material<dim>(name, set.lame);
+            const double scale     = set.lame.mu + set.lame.lambda;
             const Tensor<4, dim> C = linear_elastic_tangent<dim>(set.lame);
             const Tensor<2, dim> P = material->first_piola_kirchhoff(I);
             const Tensor<4, dim> A = material->stress_tangent(I);
@@ -589,21 +620,35 @@ namespace
             psi_error.update(std::abs(material->energy_density(I)) / scale, I);
             P_error.update(P.norm() / scale, I);
             A_error.update((A - C).norm() / C.norm(), I);
-            combined_error.update(
-              std::max(P2.norm() / scale, (A2 - C).norm() / C.norm()), I);
+            combined_error.update(std::max(P2.norm() / scale,
+                                           (A2 - C).norm() / C.norm()),
+                                  I);
           }
-        report.below(name, dim, "|psi(I)| / (mu+lambda)  [3 Lame sets]",
-                     psi_error.value, 1e-12);
-        report.below(name, dim, "|P(I)| / (mu+lambda)  [3 Lame sets]",
-                     P_error.value, 1e-12);
-        report.below(name, dim, "|dP/dF(I) - C| / |C|  [3 Lame sets]",
-                     A_error.value, 1e-12);
-        report.below(name, dim, "stress_and_tangent(I) = (0, C)  [3 Lame sets]",
-                     combined_error.value, 1e-12);
+        report.below(name,
+                     dim,
+                     "|psi(I)| / (mu+lambda)  [3 Lame sets]",
+                     psi_error.value,
+                     1e-12);
+        report.below(name,
+                     dim,
+                     "|P(I)| / (mu+lambda)  [3 Lame sets]",
+                     P_error.value,
+                     1e-12);
+        report.below(name,
+                     dim,
+                     "|dP/dF(I) - C| / |C|  [3 Lame sets]",
+                     A_error.value,
+                     1e-12);
+        report.below(name,
+                     dim,
+                     "stress_and_tangent(I) = (0, C)  [3 Lame sets]",
+                     combined_error.value,
+                     1e-12);
       }
   }
 
-  // ------------------------------------------------------------- 2. consistency
+  // ------------------------------------------------------------- 2.
+  // consistency
 
   template <int dim>
   void
@@ -626,9 +671,9 @@ namespace
                   sample_determinant(random, s, branch.sign));
                 const Tensor<2, dim> P = material->first_piola_kirchhoff(F);
                 const Tensor<4, dim> A = material->stress_tangent(F);
-                P_error.update((P - gradient_by_differences(*material, F)).norm() /
-                                 P.norm(),
-                               F);
+                P_error.update(
+                  (P - gradient_by_differences(*material, F)).norm() / P.norm(),
+                  F);
                 A_error.update((A - jacobian_by_differences(P_of, F)).norm() /
                                  A.norm(),
                                F);
@@ -642,17 +687,30 @@ namespace
                                                (A2 - A).norm() / A.norm()),
                                       F);
               }
-            report.below(name, dim, "P vs FD of psi, " + branch.label,
-                         P_error.value, 1e-6, P_error.worst_case);
-            report.below(name, dim, "dP/dF vs FD of P, " + branch.label,
-                         A_error.value, 1e-6, A_error.worst_case);
-            report.below(name, dim, "stress_and_tangent = separate, " + branch.label,
-                         combined_error.value, 1e-12, combined_error.worst_case);
+            report.below(name,
+                         dim,
+                         "P vs FD of psi, " + branch.label,
+                         P_error.value,
+                         1e-6,
+                         P_error.worst_case);
+            report.below(name,
+                         dim,
+                         "dP/dF vs FD of P, " + branch.label,
+                         A_error.value,
+                         1e-6,
+                         A_error.worst_case);
+            report.below(name,
+                         dim,
+                         "stress_and_tangent = separate, " + branch.label,
+                         combined_error.value,
+                         1e-12,
+                         combined_error.worst_case);
           }
       }
   }
 
-  // ------------------------------------------------------------- 3. objectivity
+  // ------------------------------------------------------------- 3.
+  // objectivity
 
   /// A rotation by 90 degrees about the last axis (in-plane in 2D).
   template <int dim>
@@ -682,12 +740,16 @@ namespace
             // undeformed body gives psi = 2 mu + 2 lambda instead of 0.
             const Tensor<2, dim> Q = quarter_turn<dim>();
             const Tensor<2, dim> I = identity<dim>();
-            report.above(name, dim, "known defect: |psi(Q90) - psi(I)| / mu",
+            report.above(name,
+                         dim,
+                         "known defect: |psi(Q90) - psi(I)| / mu",
                          std::abs(material->energy_density(Q) -
                                   material->energy_density(I)) /
                            lame.mu,
                          1e-1);
-            report.above(name, dim, "known defect: |P(Q90) - Q90 P(I)| / mu",
+            report.above(name,
+                         dim,
+                         "known defect: |P(Q90) - Q90 P(I)| / mu",
                          (material->first_piola_kirchhoff(Q) -
                           Q * material->first_piola_kirchhoff(I))
                              .norm() /
@@ -711,11 +773,13 @@ namespace
               const Tensor<2, dim> Q = random.rotation<dim>();
 
               const double psi = material->energy_density(F);
-              psi_error.update(
-                std::abs(material->energy_density(Q * F) - psi) / std::abs(psi), F);
+              psi_error.update(std::abs(material->energy_density(Q * F) - psi) /
+                                 std::abs(psi),
+                               F);
               const Tensor<2, dim> P = material->first_piola_kirchhoff(F);
               P_error.update(
-                (material->first_piola_kirchhoff(Q * F) - Q * P).norm() / P.norm(),
+                (material->first_piola_kirchhoff(Q * F) - Q * P).norm() /
+                  P.norm(),
                 F);
               const Tensor<4, dim> A = material->stress_tangent(F);
               A_error.update((material->stress_tangent(Q * F) -
@@ -726,12 +790,24 @@ namespace
             }
         const std::string range =
           material->defined_for_inverted_elements() ? ", J>0 and J<0" : ", J>0";
-        report.below(name, dim, "psi(QF) = psi(F)" + range, psi_error.value,
-                     1e-12, psi_error.worst_case);
-        report.below(name, dim, "P(QF) = Q P(F)" + range, P_error.value, 1e-12,
+        report.below(name,
+                     dim,
+                     "psi(QF) = psi(F)" + range,
+                     psi_error.value,
+                     1e-12,
+                     psi_error.worst_case);
+        report.below(name,
+                     dim,
+                     "P(QF) = Q P(F)" + range,
+                     P_error.value,
+                     1e-12,
                      P_error.worst_case);
-        report.below(name, dim, "dP/dF(QF) = Q dP/dF(F) Q^T" + range,
-                     A_error.value, 1e-12, A_error.worst_case);
+        report.below(name,
+                     dim,
+                     "dP/dF(QF) = Q dP/dF(F) Q^T" + range,
+                     A_error.value,
+                     1e-12,
+                     A_error.worst_case);
       }
   }
 
@@ -748,29 +824,29 @@ namespace
     for (const Branch &branch : determinant_branches(true))
       {
         Worst orthogonal(true), det_R(true), symmetric(true), product(true),
-          det_S_matches(true), sign_of_S(branch.sign < 0.),
-          svd_rotations(true), svd_product(true), svd_signs(true),
-          derivative(true);
+          det_S_matches(true), sign_of_S(branch.sign < 0.), svd_rotations(true),
+          svd_product(true), svd_signs(true), derivative(true);
         for (unsigned int s = 0; s < n_samples; ++s)
           {
-            const Tensor<2, dim> F =
-              random.deformation<dim>(sample_determinant(random, s, branch.sign));
+            const Tensor<2, dim> F = random.deformation<dim>(
+              sample_determinant(random, s, branch.sign));
             const double                  det_F = determinant(F);
             const PolarDecomposition<dim> polar = polar_decomposition(F);
-            const Tensor<2, dim> &        R     = polar.R;
-            const Tensor<2, dim> &        S     = polar.S;
+            const Tensor<2, dim>         &R     = polar.R;
+            const Tensor<2, dim>         &S     = polar.S;
 
             orthogonal.update((transpose(R) * R - I).norm(), F);
             det_R.update(std::abs(determinant(R) - 1.), F);
             symmetric.update((S - transpose(S)).norm() / S.norm(), F);
             product.update((R * S - F).norm() / F.norm(), F);
-            det_S_matches.update(std::abs(determinant(S) - det_F) / std::abs(det_F),
+            det_S_matches.update(std::abs(determinant(S) - det_F) /
+                                   std::abs(det_F),
                                  F);
             // det F > 0: S is positive definite (smallest eigenvalue > 0);
             // det F < 0: the reflection is in S, so det S < 0.
             if (branch.sign > 0.)
-              sign_of_S.update(dealii::eigenvalues(dealii::symmetrize(S))[dim - 1],
-                               F);
+              sign_of_S.update(
+                dealii::eigenvalues(dealii::symmetrize(S))[dim - 1], F);
             else
               sign_of_S.update(determinant(S), F);
 
@@ -778,18 +854,19 @@ namespace
             Tensor<2, dim>                Sigma;
             for (unsigned int a = 0; a < dim; ++a)
               Sigma[a][a] = svd.sigma[a];
-            svd_rotations.update(
-              std::max({(transpose(svd.U) * svd.U - I).norm(),
-                        (transpose(svd.V) * svd.V - I).norm(),
-                        std::abs(determinant(svd.U) - 1.),
-                        std::abs(determinant(svd.V) - 1.)}),
-              F);
+            svd_rotations.update(std::max(
+                                   {(transpose(svd.U) * svd.U - I).norm(),
+                                    (transpose(svd.V) * svd.V - I).norm(),
+                                    std::abs(determinant(svd.U) - 1.),
+                                    std::abs(determinant(svd.V) - 1.)}),
+                                 F);
             svd_product.update((svd.U * Sigma * transpose(svd.V) - F).norm() /
                                  F.norm(),
                                F);
             // Only sigma[dim-1] may be negative, exactly when det F < 0, and
             // it must be the smallest in magnitude (counted as violations).
-            double violations = (svd.sigma[dim - 1] < 0.) == (det_F < 0.) ? 0. : 1.;
+            double violations =
+              (svd.sigma[dim - 1] < 0.) == (det_F < 0.) ? 0. : 1.;
             for (unsigned int a = 0; a + 1 < dim; ++a)
               if (!(svd.sigma[a] >= std::abs(svd.sigma[dim - 1])))
                 violations += 1.;
@@ -804,39 +881,86 @@ namespace
                               F);
           }
         const std::string range = ", " + branch.label;
-        report.below(model, dim, "|R^T R - I|" + range, orthogonal.value, 1e-12,
+        report.below(model,
+                     dim,
+                     "|R^T R - I|" + range,
+                     orthogonal.value,
+                     1e-12,
                      orthogonal.worst_case);
-        report.below(model, dim, "|det R - 1|" + range, det_R.value, 1e-12,
+        report.below(model,
+                     dim,
+                     "|det R - 1|" + range,
+                     det_R.value,
+                     1e-12,
                      det_R.worst_case);
-        report.below(model, dim, "|S - S^T| / |S|" + range, symmetric.value, 1e-12,
+        report.below(model,
+                     dim,
+                     "|S - S^T| / |S|" + range,
+                     symmetric.value,
+                     1e-12,
                      symmetric.worst_case);
-        report.below(model, dim, "|R S - F| / |F|" + range, product.value, 1e-12,
+        report.below(model,
+                     dim,
+                     "|R S - F| / |F|" + range,
+                     product.value,
+                     1e-12,
                      product.worst_case);
-        report.below(model, dim, "|det S - det F| / |det F|" + range,
-                     det_S_matches.value, 1e-12, det_S_matches.worst_case);
+        report.below(model,
+                     dim,
+                     "|det S - det F| / |det F|" + range,
+                     det_S_matches.value,
+                     1e-12,
+                     det_S_matches.worst_case);
         if (branch.sign > 0.)
-          report.above(model, dim, "min eigenvalue of S (S is SPD)" + range,
-                       sign_of_S.value, 0., sign_of_S.worst_case);
+          report.above(model,
+                       dim,
+                       "min eigenvalue of S (S is SPD)" + range,
+                       sign_of_S.value,
+                       0.,
+                       sign_of_S.worst_case);
         else
-          report.record(model, dim, "max det S (reflection in S)" + range,
-                        sign_of_S.value, "< 0", sign_of_S.value < 0.,
+          report.record(model,
+                        dim,
+                        "max det S (reflection in S)" + range,
+                        sign_of_S.value,
+                        "< 0",
+                        sign_of_S.value < 0.,
                         sign_of_S.worst_case);
-        report.below(model, dim, "SVD: U, V proper rotations" + range,
-                     svd_rotations.value, 1e-12, svd_rotations.worst_case);
-        report.below(model, dim, "SVD: |U diag(sigma) V^T - F| / |F|" + range,
-                     svd_product.value, 1e-12, svd_product.worst_case);
-        report.record(model, dim, "SVD: sigma sign only at smallest (#bad)" + range,
-                      svd_signs.value, "= 0", svd_signs.value == 0.,
+        report.below(model,
+                     dim,
+                     "SVD: U, V proper rotations" + range,
+                     svd_rotations.value,
+                     1e-12,
+                     svd_rotations.worst_case);
+        report.below(model,
+                     dim,
+                     "SVD: |U diag(sigma) V^T - F| / |F|" + range,
+                     svd_product.value,
+                     1e-12,
+                     svd_product.worst_case);
+        report.record(model,
+                      dim,
+                      "SVD: sigma sign only at smallest (#bad)" + range,
+                      svd_signs.value,
+                      "= 0",
+                      svd_signs.value == 0.,
                       svd_signs.worst_case);
-        report.below(model, dim, "rotation_derivative vs FD of R" + range,
-                     derivative.value, 1e-6, derivative.worst_case);
+        report.below(model,
+                     dim,
+                     "rotation_derivative vs FD of R" + range,
+                     derivative.value,
+                     1e-6,
+                     derivative.worst_case);
       }
 
     // The identity and pure rotations have all singular values equal, the
     // degenerate case for the eigen-solver.
     const PolarDecomposition<dim> at_identity = polar_decomposition(I);
-    report.below(model, dim, "F = I: |R - I| + |S - I|",
-                 (at_identity.R - I).norm() + (at_identity.S - I).norm(), 1e-12);
+    report.below(model,
+                 dim,
+                 "F = I: |R - I| + |S - I|",
+                 (at_identity.R - I).norm() + (at_identity.S - I).norm(),
+                 1e-12);
     Worst rotation_error;
     for (unsigned int s = 0; s < n_samples; ++s)
       {
@@ -844,15 +968,20 @@ namespace
         const PolarDecomposition<dim> polar = polar_decomposition(Q);
         rotation_error.update((polar.R - Q).norm() + (polar.S - I).norm(), Q);
       }
-    report.below(model, dim, "F = Q rotation: |R - Q| + |S - I|",
-                 rotation_error.value, 1e-12, rotation_error.worst_case);
+    report.below(model,
+                 dim,
+                 "F = Q rotation: |R - Q| + |S - I|",
+                 rotation_error.value,
+                 1e-12,
+                 rotation_error.worst_case);
   }
 
   // ----------------------------------------------------------- 5. J <= 0
 
   template <int dim>
   void
-  check_inverted_elements(Report &report, const std::vector<std::string> &models)
+  check_inverted_elements(Report                         &report,
+                          const std::vector<std::string> &models)
   {
     const Tensor<2, dim> mirror = diagonal_with_last<dim>(-1.);
     const Tensor<2, dim> flat   = diagonal_with_last<dim>(0.);
@@ -860,10 +989,13 @@ namespace
       {
         const auto material = create_material<dim>(name, test_parameters());
         const bool expected_defined = (name != "neo-Hookean");
-        report.record(name, dim, "defined_for_inverted_elements()",
+        report.record(name,
+                      dim,
+                      "defined_for_inverted_elements()",
                       material->defined_for_inverted_elements() ? 1. : 0.,
                       expected_defined ? "= 1" : "= 0",
-                      material->defined_for_inverted_elements() == expected_defined);
+                      material->defined_for_inverted_elements() ==
+                        expected_defined);
 
         // The mirror and flat elements are included on purpose: equal
         // singular-value magnitudes of opposite sign make sigma_a + sigma_b
@@ -878,48 +1010,70 @@ namespace
           {
             Worst not_finite;
             for (const Tensor<2, dim> &F : inverted)
-              not_finite.update(
-                (std::isfinite(material->energy_density(F)) &&
-                 all_finite(material->first_piola_kirchhoff(F)) &&
-                 all_finite(material->stress_tangent(F))) ?
-                  0. :
-                  1.,
-                F);
-            report.record(name, dim, "psi, P, dP/dF finite at J <= 0 (# bad)",
-                          not_finite.value, "= 0", not_finite.value == 0.,
+              not_finite.update((std::isfinite(material->energy_density(F)) &&
+                                 all_finite(
+                                   material->first_piola_kirchhoff(F)) &&
+                                 all_finite(material->stress_tangent(F)))
+                                  ? 0.
+                                  : 1.,
+                                F);
+            report.record(name,
+                          dim,
+                          "psi, P, dP/dF finite at J <= 0 (# bad)",
+                          not_finite.value,
+                          "= 0",
+                          not_finite.value == 0.,
                           not_finite.worst_case);
           }
         else
           {
             const double psi_mirror = material->energy_density(mirror);
-            report.record(name, dim, "psi at F = diag(1,..,1,-1)", psi_mirror,
-                          "= +inf", psi_mirror == infinity);
+            report.record(name,
+                          dim,
+                          "psi at F = diag(1,..,1,-1)",
+                          psi_mirror,
+                          "= +inf",
+                          psi_mirror == infinity);
             const double psi_flat = material->energy_density(flat);
-            report.record(name, dim, "psi at F = diag(1,..,1,0), J = 0", psi_flat,
-                          "= +inf", psi_flat == infinity);
+            report.record(name,
+                          dim,
+                          "psi at F = diag(1,..,1,0), J = 0",
+                          psi_flat,
+                          "= +inf",
+                          psi_flat == infinity);
             Worst lowest(false), finite_stress;
             for (const Tensor<2, dim> &F : inverted)
               {
                 lowest.update(material->energy_density(F), F);
                 // P and dP/dF are NaN there by design: a caller must not
                 // be able to take them for a usable stress.
-                finite_stress.update(
-                  (all_finite(material->first_piola_kirchhoff(F)) ||
-                   all_finite(material->stress_tangent(F))) ?
-                    1. :
-                    0.,
-                  F);
+                finite_stress.update((all_finite(
+                                        material->first_piola_kirchhoff(F)) ||
+                                      all_finite(material->stress_tangent(F)))
+                                       ? 1.
+                                       : 0.,
+                                     F);
               }
-            report.record(name, dim, "min psi over random J < 0", lowest.value,
-                          "= +inf", lowest.value == infinity, lowest.worst_case);
-            report.record(name, dim, "finite P or dP/dF at J <= 0 (# bad)",
-                          finite_stress.value, "= 0", finite_stress.value == 0.,
+            report.record(name,
+                          dim,
+                          "min psi over random J < 0",
+                          lowest.value,
+                          "= +inf",
+                          lowest.value == infinity,
+                          lowest.worst_case);
+            report.record(name,
+                          dim,
+                          "finite P or dP/dF at J <= 0 (# bad)",
+                          finite_stress.value,
+                          "= 0",
+                          finite_stress.value == 0.,
                           finite_stress.worst_case);
           }
       }
   }
 
-  // ------------------------------------------------------ 6. small-strain limit
+  // ------------------------------------------------------ 6. small-strain
+  // limit
 
   template <int dim>
   void
@@ -940,12 +1094,17 @@ namespace
             const Tensor<2, dim> G  = random.general<dim>();
             const Tensor<2, dim> CG = contract(C, G);
             const Tensor<2, dim> F  = identity<dim>() + eps * G;
-            error.update((material->first_piola_kirchhoff(F) / eps - CG).norm() /
-                           CG.norm(),
-                         F);
+            error.update(
+              (material->first_piola_kirchhoff(F) / eps - CG).norm() /
+                CG.norm(),
+              F);
           }
-        report.below(name, dim, "P(I + eps G) / eps vs C:G, eps = 1e-7",
-                     error.value, 1e-5, error.worst_case);
+        report.below(name,
+                     dim,
+                     "P(I + eps G) / eps vs C:G, eps = 1e-7",
+                     error.value,
+                     1e-5,
+                     error.worst_case);
       }
   }
 
@@ -958,14 +1117,19 @@ namespace
     check_reference_tangent<dim>(report);
     report.section(std::to_string(dim) + "D  1. rest state F = I");
     check_rest_state<dim>(report, models);
-    report.section(std::to_string(dim) + "D  2. consistency with finite differences (" +
+    report.section(std::to_string(dim) +
+                   "D  2. consistency with finite differences (" +
                    std::to_string(n_samples) + " random F per row)");
     check_consistency<dim>(report, models);
-    report.section(std::to_string(dim) + "D  3. objectivity (random Q; linear elastic is expected NOT to be)");
+    report.section(
+      std::to_string(dim) +
+      "D  3. objectivity (random Q; linear elastic is expected NOT to be)");
     check_objectivity<dim>(report, models);
-    report.section(std::to_string(dim) + "D  4. rotation-variant polar decomposition");
+    report.section(std::to_string(dim) +
+                   "D  4. rotation-variant polar decomposition");
     check_polar_decomposition<dim>(report);
-    report.section(std::to_string(dim) + "D  5. inverted and flat elements (J <= 0)");
+    report.section(std::to_string(dim) +
+                   "D  5. inverted and flat elements (J <= 0)");
     check_inverted_elements<dim>(report, models);
     report.section(std::to_string(dim) + "D  6. small-strain limit");
     check_small_strain<dim>(report, models);
@@ -988,7 +1152,8 @@ main()
     }
   catch (const std::exception &exception)
     {
-      std::fprintf(stderr, "material_test: unexpected exception:\n%s\n",
+      std::fprintf(stderr,
+                   "material_test: unexpected exception:\n%s\n",
                    exception.what());
       return 2;
     }

@@ -28,29 +28,40 @@ namespace
   std::string
   scene(const int dim, const bool twisted, const std::string &base_name)
   {
-    const bool three = dim == 3;
+    const bool  three = dim == 3;
     std::string text =
       subsection("Problem", entry("Dimension", std::to_string(dim))) +
-      subsection("Mesh", entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                           entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
-                           entry("Subdivisions", three ? "6, 2, 2" : "12, 4")) +
-      subsection("Material", entry("Model", three ? "neo-Hookean" : "corotational") +
-                               entry("Young's modulus", "1") +
-                               entry("Poisson's ratio", "0.3"));
+      subsection("Mesh",
+                 entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
+                   entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
+                   entry("Subdivisions", three ? "6, 2, 2" : "12, 4")) +
+      subsection("Material",
+                 entry("Model", three ? "neo-Hookean" : "corotational") +
+                   entry("Young's modulus", "1") +
+                   entry("Poisson's ratio", "0.3"));
     if (twisted)
       {
         text += subsection("Loading",
                            entry("Number of load steps", "3") +
                              entry("Constants", "a = 1.0") +
-                             entry("Body force", three ? "0; 0; -0.05*t" : "0; -0.05*t"));
-        text += dirichlet(1, 0, three ? "x, y, z" : "x, y", three ? "0; 0; 0" : "0; 0");
-        text += dirichlet(2, 1, three ? "x, y, z" : "x, y",
-                          three ? "0.3*t; (cos(a*t) - 1)*(y - 0.5) - sin(a*t)*(z - 0.5);"
-                                  " sin(a*t)*(y - 0.5) + (cos(a*t) - 1)*(z - 0.5)" :
-                                  "0.2*t; 0.3*t");
-        text += subsection("Traction 1", entry("Boundary id", "3") +
-                                           entry("Traction", three ? "0; 0.02*t; 0" :
-                                                                     "0.02*t; 0"));
+                             entry("Body force",
+                                   three ? "0; 0; -0.05*t" : "0; -0.05*t"));
+        text += dirichlet(1,
+                          0,
+                          three ? "x, y, z" : "x, y",
+                          three ? "0; 0; 0" : "0; 0");
+        text +=
+          dirichlet(2,
+                    1,
+                    three ? "x, y, z" : "x, y",
+                    three
+                      ? "0.3*t; (cos(a*t) - 1)*(y - 0.5) - sin(a*t)*(z - 0.5);"
+                        " sin(a*t)*(y - 0.5) + (cos(a*t) - 1)*(z - 0.5)"
+                      : "0.2*t; 0.3*t");
+        text +=
+          subsection("Traction 1",
+                     entry("Boundary id", "3") +
+                       entry("Traction", three ? "0; 0.02*t; 0" : "0.02*t; 0"));
       }
     else
       {
@@ -61,10 +72,11 @@ namespace
           text += dirichlet(4, 4, "z", "0");
       }
     return text + tight_solver("cg") +
-           subsection("Output", entry("Directory", "rank_invariance_output") +
-                                  entry("Base name", base_name) +
-                                  entry("Write VTU", "false") +
-                                  entry("Verbose", "false"));
+           subsection("Output",
+                      entry("Directory", "rank_invariance_output") +
+                        entry("Base name", base_name) +
+                        entry("Write VTU", "false") +
+                        entry("Verbose", "false"));
   }
 
   /// Named numbers a run produces: per load step the energy, the reactions
@@ -135,8 +147,11 @@ namespace
                 }
         // A vertex may be owned by several ranks' cells: take one copy.
         const double n_found = Utilities::MPI::sum(found, comm);
-        const double owner   = Utilities::MPI::max(
-          found > 0. ? double(Utilities::MPI::this_mpi_process(comm)) : -1., comm);
+        const double owner =
+          Utilities::MPI::max(found > 0.
+                                ? double(Utilities::MPI::this_mpi_process(comm))
+                                : -1.,
+                              comm);
         AssertThrow(n_found > 0., ExcMessage("test vertex not in the mesh"));
         if (double(Utilities::MPI::this_mpi_process(comm)) != owner)
           u = 0.;
@@ -156,15 +171,16 @@ namespace
   {
     const std::string tag =
       std::to_string(dim) + "d_" + (twisted ? "twisted" : "bar");
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-    const Numbers      parallel =
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const Numbers parallel =
       solve<dim>(scene(dim, twisted, tag + "_np" + std::to_string(n_ranks)),
                  MPI_COMM_WORLD);
     unsigned int failed = 0, checked = 0;
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
-        const Numbers serial = solve<dim>(scene(dim, twisted, tag + "_np1"),
-                                          MPI_COMM_SELF);
+        const Numbers serial =
+          solve<dim>(scene(dim, twisted, tag + "_np1"), MPI_COMM_SELF);
         // Relative to the largest number of the same kind, so that values
         // that are zero by symmetry are judged against the problem's scale.
         double scale = 0.;
@@ -182,9 +198,10 @@ namespace
             if (print)
               std::cout << "  " << std::left << std::setw(32) << serial.names[i]
                         << std::right << std::setprecision(14) << std::setw(24)
-                        << parallel.values[i] << std::setw(24) << serial.values[i]
-                        << std::setprecision(2) << std::scientific << std::setw(10)
-                        << error << std::defaultfloat << (ok ? "  PASS" : "  FAIL")
+                        << parallel.values[i] << std::setw(24)
+                        << serial.values[i] << std::setprecision(2)
+                        << std::scientific << std::setw(10) << error
+                        << std::defaultfloat << (ok ? "  PASS" : "  FAIL")
                         << '\n';
           }
         checked = serial.values.size();
@@ -192,7 +209,8 @@ namespace
           ++failed;
       }
     return Utilities::MPI::broadcast(MPI_COMM_WORLD,
-                                     std::make_pair(checked, failed), 0);
+                                     std::make_pair(checked, failed),
+                                     0);
   }
 } // namespace
 
@@ -214,7 +232,7 @@ main(int argc, char *argv[])
     },
     MPI_COMM_WORLD);
   if (print)
-    std::cout << (n_checks - std::min(n_checks, failed)) << " passed, " << failed
-              << " failed" << std::endl;
+    std::cout << (n_checks - std::min(n_checks, failed)) << " passed, "
+              << failed << " failed" << std::endl;
   return (status != 0 || failed > 0 || n_checks == 0) ? 1 : 0;
 }

@@ -19,7 +19,9 @@ namespace hyperelastic::testing
   }
 
   inline std::string
-  dirichlet(const int slot, const int id, const std::string &components,
+  dirichlet(const int          slot,
+            const int          id,
+            const std::string &components,
             const std::string &value)
   {
     return subsection("Dirichlet " + std::to_string(slot),
@@ -32,13 +34,15 @@ namespace hyperelastic::testing
   inline std::string
   tight_solver(const std::string &linear_solver)
   {
-    return subsection("Newton", entry("Max iterations", "25") +
-                                  entry("Absolute residual tolerance", "1e-14") +
-                                  entry("Relative residual tolerance", "1e-12") +
-                                  entry("Update tolerance", "1e-10")) +
+    return subsection("Newton",
+                      entry("Max iterations", "25") +
+                        entry("Absolute residual tolerance", "1e-14") +
+                        entry("Relative residual tolerance", "1e-12") +
+                        entry("Update tolerance", "1e-10")) +
            subsection("Linear solver",
-                      entry("Type", linear_solver == "direct" ? "direct" :
-                                                                "CG with AMG") +
+                      entry("Type",
+                            linear_solver == "direct" ? "direct"
+                                                      : "CG with AMG") +
                         entry("Relative tolerance", "1e-10"));
   }
 } // namespace hyperelastic::testing

@@ -24,10 +24,10 @@ namespace hyperelastic
   template <int dim>
   struct DirichletBoundary
   {
-    boundary_id                              id;
-    dealii::ComponentMask                    mask;
-    std::unique_ptr<dealii::Function<dim>>   displacement; ///< dim components
-    std::string                              subsection;
+    boundary_id                            id;
+    dealii::ComponentMask                  mask;
+    std::unique_ptr<dealii::Function<dim>> displacement; ///< dim components
+    std::string                            subsection;
   };
 
   template <int dim>
@@ -46,27 +46,28 @@ namespace hyperelastic
 
     /// Parses every expression and checks that each named boundary id exists
     /// in @p mesh_ids. Throws InputError naming the entry.
-    BoundaryConditions(const LoadingParameters &           loading,
+    BoundaryConditions(const LoadingParameters     &loading,
                        const std::set<boundary_id> &mesh_ids);
 
     /// Constraints u = g(x, t) - @p current on the Dirichlet dofs (the
     /// increment that takes the current displacement to the prescribed one),
     /// or homogeneous ones if @p homogeneous.
     void
-    make_constraints(const dealii::Mapping<dim> &                mapping,
-                     const dealii::DoFHandler<dim> &             dof_handler,
-                     const dealii::IndexSet &                    relevant_dofs,
-                     const double                                t,
-                     const dealii::TrilinosWrappers::MPI::Vector &current_ghosted,
-                     const bool                                  homogeneous,
-                     dealii::AffineConstraints<double> &         constraints) const;
+    make_constraints(
+      const dealii::Mapping<dim>                  &mapping,
+      const dealii::DoFHandler<dim>               &dof_handler,
+      const dealii::IndexSet                      &relevant_dofs,
+      const double                                 t,
+      const dealii::TrilinosWrappers::MPI::Vector &current_ghosted,
+      const bool                                   homogeneous,
+      dealii::AffineConstraints<double>           &constraints) const;
   };
 
   /// A vector-valued function of (x, y, (z,) t) from dim expressions.
   /// Throws InputError naming @p entry if an expression does not parse.
   template <int dim>
   std::unique_ptr<dealii::Function<dim>>
-  parse_vector_function(const std::vector<std::string> &     expressions,
+  parse_vector_function(const std::vector<std::string>      &expressions,
                         const std::map<std::string, double> &constants,
-                        const std::string &                  entry);
+                        const std::string                   &entry);
 } // namespace hyperelastic

@@ -39,25 +39,27 @@ namespace hyperelastic
   class ElasticityOperator
   {
   public:
-    ElasticityOperator(const dealii::DoFHandler<dim> &  dof_handler,
-                       const dealii::Mapping<dim> &     mapping,
-                       const Material<dim> &            material,
-                       const BoundaryConditions<dim> &  boundary_conditions);
+    ElasticityOperator(const dealii::DoFHandler<dim> &dof_handler,
+                       const dealii::Mapping<dim>    &mapping,
+                       const Material<dim>           &material,
+                       const BoundaryConditions<dim> &boundary_conditions);
 
     /// Internal forces f_int(u) and external forces f_ext(t), unconstrained
     /// (both compressed, owned entries only). u must have ghost entries.
     void
-    assemble_forces(const VectorType &u, const double t, VectorType &internal,
-                    VectorType &external) const;
+    assemble_forces(const VectorType &u,
+                    const double      t,
+                    VectorType       &internal,
+                    VectorType       &external) const;
 
     /// Tangent K = d f_int / du and right-hand side -(f_int - f_ext),
     /// condensed with @p constraints (whose inhomogeneities are imposed).
     void
-    assemble_system(const VectorType &                       u,
+    assemble_system(const VectorType                        &u,
                     const double                             t,
                     const dealii::AffineConstraints<double> &constraints,
-                    MatrixType &                             matrix,
-                    VectorType &                             rhs) const;
+                    MatrixType                              &matrix,
+                    VectorType                              &rhs) const;
 
     /// Total potential energy: stored energy minus the work of the loads.
     double
@@ -74,8 +76,8 @@ namespace hyperelastic
     for_each_cell(const VectorType &u, CellWorker &&worker) const;
 
     const dealii::DoFHandler<dim> &dof_handler;
-    const dealii::Mapping<dim> &   mapping;
-    const Material<dim> &          material;
+    const dealii::Mapping<dim>    &mapping;
+    const Material<dim>           &material;
     const BoundaryConditions<dim> &boundary_conditions;
     /// Quadrature for the stress terms: exact for P1 (one point) and for the
     /// linear-elastic stiffness of P2.

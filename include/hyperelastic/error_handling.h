@@ -7,9 +7,8 @@
 // no rank is left waiting in a collective call.
 #pragma once
 
-#include <mpi.h>
-
 #include <functional>
+#include <mpi.h>
 #include <stdexcept>
 #include <string>
 
@@ -41,8 +40,9 @@ namespace hyperelastic
   /// Throws InputError(message) on every rank if @p failed is true on any rank.
   /// Collective over @p comm.
   void
-  throw_input_error_if_any(const bool failed, const std::string &message,
-                           const MPI_Comm comm);
+  throw_input_error_if_any(const bool         failed,
+                           const std::string &message,
+                           const MPI_Comm     comm);
 
   /// Runs @p body and turns exceptions into messages and exit codes as
   /// described above. Returns the exit code.

@@ -22,21 +22,22 @@ namespace hyperelastic
     /// The near-null space for AMG (column-major on the owned rows), and the
     /// number of unknowns per node ("PDE equations" for ML).
     void
-    set_near_null_space(std::vector<double> modes, unsigned int n_modes,
-                        unsigned int n_components);
+    set_near_null_space(std::vector<double> modes,
+                        unsigned int        n_modes,
+                        unsigned int        n_components);
 
     /// Solves A x = b to the relative tolerance of the parameters. Returns the
     /// number of Krylov iterations (0 for a direct solve).
     unsigned int
     solve(const dealii::TrilinosWrappers::SparseMatrix &A,
-          dealii::TrilinosWrappers::MPI::Vector &       x,
-          const dealii::TrilinosWrappers::MPI::Vector & b);
+          dealii::TrilinosWrappers::MPI::Vector        &x,
+          const dealii::TrilinosWrappers::MPI::Vector  &b);
 
   private:
-    const LinearSolverParameters parameters;
-    std::vector<double>          null_space;
-    unsigned int                 n_modes      = 0;
-    unsigned int                 n_components = 1;
+    const LinearSolverParameters              parameters;
+    std::vector<double>                       null_space;
+    unsigned int                              n_modes      = 0;
+    unsigned int                              n_components = 1;
     dealii::TrilinosWrappers::PreconditionAMG amg;
   };
 } // namespace hyperelastic

@@ -1,6 +1,7 @@
 // Mesh creation: a generated box of simplices or a gmsh file, refined, then
 // partitioned with METIS and handed to a fully distributed triangulation, so
-// that after creation every rank stores only its own cells (plus a ghost layer).
+// that after creation every rank stores only its own cells (plus a ghost
+// layer).
 #pragma once
 
 #include <deal.II/base/types.h>
@@ -17,7 +18,7 @@ namespace hyperelastic
   /// unsuitable meshes.
   template <int dim>
   std::set<dealii::types::boundary_id>
-  create_mesh(const MeshParameters &                             parameters,
+  create_mesh(const MeshParameters &parameters,
               dealii::parallel::fullydistributed::Triangulation<dim> &tria);
 
   /// Boundary ids of a box: 2 d on the face x_d = min, 2 d + 1 on x_d = max.

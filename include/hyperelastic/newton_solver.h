@@ -68,8 +68,9 @@ namespace hyperelastic
   class NewtonSolver
   {
   public:
-    NewtonSolver(const NewtonParameters &parameters, dealii::ConditionalOStream pcout,
-                 bool verbose);
+    NewtonSolver(const NewtonParameters    &parameters,
+                 dealii::ConditionalOStream pcout,
+                 bool                       verbose);
 
     /// Iterate until converged; throws ConvergenceFailure with the residual
     /// history otherwise (NaN, or the iteration limit).

@@ -51,10 +51,10 @@ namespace hyperelastic
     void
     write_fields(unsigned int                                 step,
                  double                                       load_factor,
-                 const dealii::DoFHandler<dim> &              dof_handler,
-                 const dealii::Mapping<dim> &                 mapping,
+                 const dealii::DoFHandler<dim>               &dof_handler,
+                 const dealii::Mapping<dim>                  &mapping,
                  const dealii::TrilinosWrappers::MPI::Vector &u,
-                 const CellFields &                           fields);
+                 const CellFields                            &fields);
 
     /// Appends one row to <base>.csv (rank 0 writes).
     void
@@ -64,9 +64,9 @@ namespace hyperelastic
     csv_file() const;
 
   private:
-    const OutputParameters                   parameters;
-    const MPI_Comm                           comm;
+    const OutputParameters                      parameters;
+    const MPI_Comm                              comm;
     std::vector<std::pair<double, std::string>> pvd_entries;
-    std::ofstream                            csv;
+    std::ofstream                               csv;
   };
 } // namespace hyperelastic

@@ -21,8 +21,10 @@ namespace hyperelastic
     unsigned int dimension = 3;
     unsigned int fe_degree = 1;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   enum class MeshSource
@@ -40,8 +42,10 @@ namespace hyperelastic
     std::vector<unsigned int> subdivisions;
     unsigned int              global_refinements = 0;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm, const std::string &scene_folder);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm, const std::string &scene_folder);
   };
 
   struct MaterialParameters
@@ -49,8 +53,10 @@ namespace hyperelastic
     std::string    model;
     LameParameters lame;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /// A displacement prescribed on one boundary id for some components.
@@ -72,17 +78,19 @@ namespace hyperelastic
 
   struct LoadingParameters
   {
-    unsigned int                  n_load_steps = 10;
-    std::vector<std::string>      body_force; ///< empty: no body force
-    std::map<std::string, double> constants;
+    unsigned int                    n_load_steps = 10;
+    std::vector<std::string>        body_force; ///< empty: no body force
+    std::map<std::string, double>   constants;
     std::vector<DirichletCondition> dirichlet;
     std::vector<TractionCondition>  tractions;
 
     static constexpr unsigned int max_dirichlet = 8;
     static constexpr unsigned int max_tractions = 4;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   struct NewtonParameters
@@ -92,8 +100,10 @@ namespace hyperelastic
     double       relative_residual_tolerance = 1e-10;
     double       update_tolerance            = 1e-8;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   enum class LinearSolverType
@@ -104,15 +114,17 @@ namespace hyperelastic
 
   struct LinearSolverParameters
   {
-    LinearSolverType type               = LinearSolverType::cg_amg;
-    double           relative_tolerance = 1e-8;
-    unsigned int     max_iterations     = 1000;
-    std::string      direct_solver      = "Amesos_Klu";
+    LinearSolverType type                  = LinearSolverType::cg_amg;
+    double           relative_tolerance    = 1e-8;
+    unsigned int     max_iterations        = 1000;
+    std::string      direct_solver         = "Amesos_Klu";
     double           aggregation_threshold = 1e-4;
     unsigned int     smoother_sweeps       = 2;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   struct OutputParameters
@@ -122,8 +134,10 @@ namespace hyperelastic
     bool        write_vtu = true;
     bool        verbose   = true;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /// All subsections of a scene.
@@ -137,18 +151,22 @@ namespace hyperelastic
     LinearSolverParameters linear_solver;
     OutputParameters       output;
 
-    static void declare(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
 
     /// Read a scene file. Throws InputError naming the file and entry.
-    void read(const std::string &scene_file);
+    void
+    read(const std::string &scene_file);
 
     /// Parse a scene given as text (for tests); relative paths are resolved
     /// against @p scene_folder.
-    void read_from_string(const std::string &text,
-                          const std::string &scene_folder = ".",
-                          const std::string &scene_name   = "scene");
+    void
+    read_from_string(const std::string &text,
+                     const std::string &scene_folder = ".",
+                     const std::string &scene_name   = "scene");
 
   private:
-    void parse(ParameterHandler &prm, const std::string &scene_folder);
+    void
+    parse(ParameterHandler &prm, const std::string &scene_folder);
   };
 } // namespace hyperelastic

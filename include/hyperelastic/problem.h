@@ -104,7 +104,8 @@ namespace hyperelastic
     /// it whose component is prescribed there, with that component (for the
     /// reaction forces).
     std::vector<dealii::types::boundary_id> reaction_ids;
-    std::vector<std::vector<std::pair<dealii::types::global_dof_index, unsigned int>>>
+    std::vector<
+      std::vector<std::pair<dealii::types::global_dof_index, unsigned int>>>
       reaction_dofs;
 
     MatrixType tangent;

@@ -15,9 +15,9 @@ namespace hyperelastic
   /// about the centre of the mesh's bounding box for better conditioning.
   template <int dim>
   std::vector<double>
-  rigid_body_modes(const dealii::Mapping<dim> &   mapping,
+  rigid_body_modes(const dealii::Mapping<dim>    &mapping,
                    const dealii::DoFHandler<dim> &dof_handler);
 
   template <int dim>
-  constexpr unsigned int n_rigid_body_modes = dim * (dim + 1) / 2;
+  constexpr unsigned int n_rigid_body_modes = dim *(dim + 1) / 2;
 } // namespace hyperelastic

@@ -49,8 +49,9 @@ namespace hyperelastic
     if (name == "neo-Hookean")
       return std::make_unique<NeoHookean<dim>>(lame);
     AssertThrow(false,
-                dealii::ExcMessage("Unknown material model '" + name +
-                                   "'; known models: " + material_model_names()));
+                dealii::ExcMessage(
+                  "Unknown material model '" + name +
+                  "'; known models: " + material_model_names()));
     return nullptr;
   }
 

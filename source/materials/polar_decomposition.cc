@@ -26,10 +26,13 @@ namespace hyperelastic
     Tensor<1, 3>
     any_perpendicular(const Tensor<1, 3> &u)
     {
-      Tensor<1, 3> e;
+      Tensor<1, 3>       e;
       const unsigned int smallest = static_cast<unsigned int>(
-        std::min_element(&u[0], &u[0] + 3,
-                         [](double a, double b) { return std::abs(a) < std::abs(b); }) -
+        std::min_element(&u[0],
+                         &u[0] + 3,
+                         [](double a, double b) {
+                           return std::abs(a) < std::abs(b);
+                         }) -
         &u[0]);
       e[smallest]    = 1.;
       Tensor<1, 3> p = e - (e * u) * u;
@@ -71,7 +74,8 @@ namespace hyperelastic
       Tensor<1, 3>       Fv2 = F * column(svd.V, 1);
       Tensor<1, 3>       u2  = Fv2 - (Fv2 * u1) * u1;
       const double       n2  = u2.norm();
-      u2 = (n2 > 1e-300 * (1. + svd.sigma[0])) ? u2 / n2 : any_perpendicular(u1);
+      u2 =
+        (n2 > 1e-300 * (1. + svd.sigma[0])) ? u2 / n2 : any_perpendicular(u1);
       const Tensor<1, 3> u3 = cross_product_3d(u1, u2);
       set_column(svd.U, 1, u2);
       set_column(svd.U, 2, u3);
@@ -84,7 +88,7 @@ namespace hyperelastic
   RotationVariantSVD<dim>
   rotation_variant_svd(const Tensor<2, dim> &F)
   {
-    RotationVariantSVD<dim> svd;
+    RotationVariantSVD<dim>       svd;
     const SymmetricTensor<2, dim> C = symmetrize(transpose(F) * F);
     const auto eig = eigenvectors(C, SymmetricTensorEigenvectorMethod::jacobi);
 

@@ -1,4 +1,5 @@
-// Corotational elasticity with the rotation-variant polar decomposition F = R S:
+// Corotational elasticity with the rotation-variant polar decomposition F = R
+// S:
 //   psi = mu ||F - R||^2 + lambda/2 (tr(S - I))^2,
 //   P = 2 mu (F - R) + lambda tr(S - I) R,
 //   dP/dF = 2 mu (I x I - dR/dF) + lambda R x R + lambda tr(S - I) dR/dF.
@@ -51,8 +52,8 @@ namespace hyperelastic
 
     void
     stress_and_tangent(const Tensor<2, dim> &F,
-                       Tensor<2, dim> &      P,
-                       StressTangent<dim> &  A) const override
+                       Tensor<2, dim>       &P,
+                       StressTangent<dim>   &A) const override
     {
       const RotationVariantSVD<dim> svd = rotation_variant_svd(F);
       const Tensor<2, dim>          R   = svd.U * transpose(svd.V);
@@ -68,10 +69,9 @@ namespace hyperelastic
         for (unsigned int J = 0; J < dim; ++J)
           for (unsigned int k = 0; k < dim; ++k)
             for (unsigned int L = 0; L < dim; ++L)
-              A[i][J][k][L] = 2. * mu * ((i == k && J == L ? 1. : 0.) -
-                                         dR[i][J][k][L]) +
-                              lambda * R[i][J] * R[k][L] +
-                              lambda * tr * dR[i][J][k][L];
+              A[i][J][k][L] =
+                2. * mu * ((i == k && J == L ? 1. : 0.) - dR[i][J][k][L]) +
+                lambda * R[i][J] * R[k][L] + lambda * tr * dR[i][J][k][L];
     }
 
     bool

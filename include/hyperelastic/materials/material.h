@@ -1,7 +1,7 @@
 // The constitutive interface: a hyperelastic material is a pure function of the
 // deformation gradient F giving the energy density psi(F) per unit reference
-// volume, the first Piola-Kirchhoff stress P = dpsi/dF and its derivative dP/dF.
-// Nothing here knows about meshes, quadrature or MPI.
+// volume, the first Piola-Kirchhoff stress P = dpsi/dF and its derivative
+// dP/dF. Nothing here knows about meshes, quadrature or MPI.
 #pragma once
 
 #include <deal.II/base/tensor.h>
@@ -39,8 +39,9 @@ namespace hyperelastic
   {
   public:
     explicit Material(const LameParameters &lame)
-      : lame(lame)
-    {}
+        : lame(lame)
+    {
+    }
     virtual ~Material() = default;
 
     virtual std::string
@@ -62,8 +63,8 @@ namespace hyperelastic
     /// P and dP/dF together; models sharing work between both override this.
     virtual void
     stress_and_tangent(const Tensor<2, dim> &F,
-                       Tensor<2, dim> &      P,
-                       StressTangent<dim> &  A) const
+                       Tensor<2, dim>       &P,
+                       StressTangent<dim>   &A) const
     {
       P = first_piola_kirchhoff(F);
       A = stress_tangent(F);
@@ -83,7 +84,8 @@ namespace hyperelastic
     const LameParameters lame;
   };
 
-  /// The model names accepted in a scene, separated by '|' (a parameter pattern).
+  /// The model names accepted in a scene, separated by '|' (a parameter
+  /// pattern).
   std::string
   material_model_names();
 

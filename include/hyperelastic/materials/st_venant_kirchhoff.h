@@ -49,9 +49,10 @@ namespace hyperelastic
         for (unsigned int J = 0; J < dim; ++J)
           for (unsigned int k = 0; k < dim; ++k)
             for (unsigned int L = 0; L < dim; ++L)
-              A[i][J][k][L] = (i == k ? S[J][L] : 0.) +
-                              mu * ((J == L ? b[i][k] : 0.) + F[i][L] * F[k][J]) +
-                              lambda * F[i][J] * F[k][L];
+              A[i][J][k][L] =
+                (i == k ? S[J][L] : 0.) +
+                mu * ((J == L ? b[i][k] : 0.) + F[i][L] * F[k][J]) +
+                lambda * F[i][J] * F[k][L];
       return A;
     }
 
@@ -74,8 +75,8 @@ namespace hyperelastic
     Tensor<2, dim>
     second_piola_kirchhoff(const Tensor<2, dim> &F) const
     {
-      const Tensor<2, dim> E = green_strain(F);
-      Tensor<2, dim>       S = 2. * this->lame.mu * E;
+      const Tensor<2, dim> E  = green_strain(F);
+      Tensor<2, dim>       S  = 2. * this->lame.mu * E;
       const double         tr = trace(E);
       for (unsigned int i = 0; i < dim; ++i)
         S[i][i] += this->lame.lambda * tr;
