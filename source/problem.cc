@@ -271,6 +271,7 @@ namespace hyperelastic
 
     // min J always (cheap); the fields only if they are written.
     const CellFields fields = elasticity->cell_fields(u_ghosted, s.min_J);
+    scope.stop();
     if (parameters.output.write_vtu)
       {
         TimerOutput::Scope output_scope(timer, "output");

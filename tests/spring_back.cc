@@ -1,0 +1,75 @@
+// Spring-back of the example scene parameters/squashed_block_2d.prm: the
+// plate moves by -0.2 sin(pi t), so the states at t and 1 - t coincide for a
+// hyperelastic (path-independent) model and the block returns exactly to its
+// rest shape at t = 1. Asserts, on the scene file as shipped:
+//   energy(t) = energy(1 - t) and reactions(t) = reactions(1 - t) to 1e-8,
+//   energy(1) <= 1e-12 max energy, min J(1) = 1 and |u(1)| <= 1e-10.
+//
+// Usage: mpirun -np N spring_back SCENE.prm
+#include <deal.II/base/mpi.h>
+
+#include <hyperelastic/error_handling.h>
+#include <hyperelastic/problem.h>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+using namespace hyperelastic;
+
+int
+main(int argc, char *argv[])
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool                               print =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  unsigned int passed = 0, failed = 0;
+  const auto   check =
+    [&](const std::string &what, const double error, const double tolerance) {
+      const bool ok = error <= tolerance;
+      (ok ? passed : failed)++;
+      if (print)
+        std::cout << "  " << std::left << std::setw(44) << what << std::right
+                  << std::scientific << std::setprecision(2) << std::setw(10)
+                  << error << " <= " << tolerance << (ok ? "  PASS" : "  FAIL")
+                  << '\n';
+    };
+
+  const int status = run_and_report(
+    [&]() {
+      Parameters parameters;
+      parameters.read(argc > 1 ? argv[1] : "");
+      parameters.output.write_vtu = false;
+      parameters.output.base_name = "spring_back";
+      Problem<2> problem(parameters, MPI_COMM_WORLD, false);
+      problem.run();
+      const auto &steps = problem.summaries();
+      const auto  n     = steps.size();
+
+      double max_energy = 0.;
+      for (const auto &s : steps)
+        max_energy = std::max(max_energy, std::abs(s.energy));
+      for (unsigned int k = 0; k + 1 < n / 2; ++k)
+        {
+          const auto       &a = steps[k], &b = steps[n - 2 - k]; // t and 1 - t
+          const std::string at = " at t = " + std::to_string(a.load_factor);
+          check("energy(t) - energy(1 - t)" + at,
+                std::abs(a.energy - b.energy) / max_energy,
+                1e-8);
+          for (unsigned int r = 0; r < a.reactions.size(); ++r)
+            check("reaction(t) - reaction(1 - t)" + at,
+                  (a.reactions[r].second - b.reactions[r].second).norm() /
+                    std::max(a.reactions[r].second.norm(), 1e-300),
+                  1e-8);
+        }
+      check("energy at t = 1",
+            std::abs(steps.back().energy) / max_energy,
+            1e-12);
+      check("min J - 1 at t = 1", std::abs(steps.back().min_J - 1.), 1e-10);
+      check("max |u| at t = 1", problem.solution().linfty_norm(), 1e-10);
+    },
+    MPI_COMM_WORLD);
+  if (print)
+    std::cout << passed << " passed, " << failed << " failed" << std::endl;
+  return (status != 0 || failed > 0 || passed == 0) ? 1 : 0;
+}
