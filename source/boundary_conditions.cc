@@ -6,6 +6,7 @@
 #include <hyperelastic/boundary_conditions.h>
 #include <hyperelastic/error_handling.h>
 
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -123,8 +124,10 @@ namespace hyperelastic
   {
     constraints.clear();
     constraints.reinit(relevant_dofs);
-    for (const auto &d : dirichlet)
+    std::vector<int> non_finite(dirichlet.size(), 0);
+    for (unsigned int k = 0; k < dirichlet.size(); ++k)
       {
+        const auto                               &d = dirichlet[k];
         std::map<types::global_dof_index, double> values;
         d.displacement->set_time(t);
         VectorTools::interpolate_boundary_values(
@@ -134,6 +137,9 @@ namespace hyperelastic
             {d.id, d.displacement.get()}},
           values,
           d.mask);
+        for (const auto &[dof, value] : values)
+          if (!std::isfinite(value))
+            non_finite[k] = 1;
         for (const auto &[dof, value] : values)
           if (!constraints.is_constrained(dof))
             {
@@ -146,6 +152,16 @@ namespace hyperelastic
             }
       }
     constraints.close();
+    // Evaluated on each rank's own boundary: agree before anyone throws.
+    for (int &flag : non_finite)
+      flag = Utilities::MPI::max(flag, dof_handler.get_communicator());
+    for (unsigned int k = 0; k < dirichlet.size(); ++k)
+      if (non_finite[k] != 0)
+        throw InputError("scene entry '" + dirichlet[k].subsection +
+                         "/Displacement' is not a finite number at load "
+                         "factor t = " +
+                         std::to_string(t) +
+                         " (a division by zero or similar)");
   }
 
   template struct BoundaryConditions<2>;

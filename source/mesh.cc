@@ -46,6 +46,21 @@ namespace hyperelastic
       if (!in)
         throw InputError("cannot open mesh file '" + file_name +
                          "' (Mesh/File)");
+      // deal.II's reader handles ASCII files only; say so rather than let it
+      // fail on binary data.
+      std::string keyword, version;
+      int         file_type = 0;
+      in >> keyword;
+      if (keyword == "$MeshFormat")
+        in >> version >> file_type;
+      if (file_type != 0)
+        throw InputError(
+          "mesh file '" + file_name +
+          "' is a binary gmsh file; save it as ASCII (gmsh "
+          "option -format msh41 without -bin, or Mesh.Binary = 0)");
+      in.clear();
+      in.seekg(0);
+
       GridIn<dim> grid_in;
       grid_in.attach_triangulation(tria);
       try
