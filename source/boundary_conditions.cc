@@ -24,29 +24,41 @@ namespace hyperelastic
     all_constants.emplace("pi", numbers::PI);
     const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
 
-    auto function = std::make_unique<FunctionParser<dim>>(dim);
+    auto        function = std::make_unique<FunctionParser<dim>>(dim);
+    std::string joined;
+    for (const auto &x : expressions)
+      joined += (joined.empty() ? "" : "; ") + x;
+    const std::string what = "scene entry '" + entry + "' = '" + joined +
+                             "': cannot parse the expression (variables are " +
+                             variables + " and the Loading/Constants)";
+
     // deal.II prints muParser's complaint to std::cerr itself; keep it out of
-    // the output, the message below says the same with the entry named.
+    // the output (the message below names the entry). The guard restores
+    // std::cerr however this scope is left.
     std::ostringstream parser_chatter;
-    std::streambuf    *cerr_buffer = std::cerr.rdbuf(parser_chatter.rdbuf());
+    struct CerrRedirect
+    {
+      std::streambuf *saved;
+      ~CerrRedirect()
+      {
+        std::cerr.rdbuf(saved);
+      }
+    } redirect{std::cerr.rdbuf(parser_chatter.rdbuf())};
     try
       {
         function->initialize(variables, expressions, all_constants, true);
         // muParser compiles lazily: evaluate once so that errors show now.
         Vector<double> value(dim);
         function->vector_value(Point<dim>(), value);
-        std::cerr.rdbuf(cerr_buffer);
       }
     catch (const std::exception &e)
       {
-        std::cerr.rdbuf(cerr_buffer);
-        std::string joined;
-        for (const auto &x : expressions)
-          joined += (joined.empty() ? "" : "; ") + x;
-        throw InputError(
-          "scene entry '" + entry + "' = '" + joined +
-          "': cannot parse the expression (variables are " + variables +
-          " and the Loading/Constants): " + exception_message(e));
+        throw InputError(what + ": " + exception_message(e));
+      }
+    catch (...)
+      {
+        // muParser's own exception type is not a std::exception.
+        throw InputError(what);
       }
     return function;
   }
@@ -103,7 +115,8 @@ namespace hyperelastic
           {c.boundary_id,
            parse_vector_function<dim>(c.expressions,
                                       loading.constants,
-                                      c.subsection + "/Traction")});
+                                      c.subsection + "/Traction"),
+           c.subsection});
       }
     if (!loading.body_force.empty())
       body_force = parse_vector_function<dim>(loading.body_force,
@@ -138,7 +151,7 @@ namespace hyperelastic
           values,
           d.mask);
         for (const auto &[dof, value] : values)
-          if (!std::isfinite(value))
+          if (!homogeneous && !std::isfinite(value))
             non_finite[k] = 1;
         for (const auto &[dof, value] : values)
           if (!constraints.is_constrained(dof))

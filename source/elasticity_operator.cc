@@ -7,6 +7,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <hyperelastic/elasticity_operator.h>
+#include <hyperelastic/error_handling.h>
 
 #include <cmath>
 
@@ -67,6 +68,9 @@ namespace hyperelastic
       std::vector<types::global_dof_index> dofs;
       Vector<double>                       u;
       std::vector<Tensor<2, dim>>          F;
+      /// Which load gave a non-finite value: 0 none, 1 the body force,
+      /// 2 + k traction k.
+      int non_finite_load = 0;
     };
 
     /// F = I + grad u at the quadrature points of stress_values.
@@ -83,6 +87,15 @@ namespace hyperelastic
             F += data.u[i] * fe_values[displacement].gradient(i, q);
           data.F[q] = F;
         }
+    }
+
+    bool
+    all_finite(const Vector<double> &v)
+    {
+      for (const double x : v)
+        if (!std::isfinite(x))
+          return false;
+      return true;
     }
 
     /// Adds the body force and traction contributions (force vectors and
@@ -107,6 +120,8 @@ namespace hyperelastic
             {
               bc.body_force->vector_value(data.load_values.quadrature_point(q),
                                           value);
+              if (!all_finite(value))
+                data.non_finite_load = 1;
               const double JxW = data.load_values.JxW(q);
               for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
                 {
@@ -135,6 +150,9 @@ namespace hyperelastic
                   {
                     traction.traction->vector_value(
                       data.face_values.quadrature_point(q), value);
+                    if (!all_finite(value))
+                      data.non_finite_load =
+                        2 + (&traction - bc.tractions.data());
                     const double JxW = data.face_values.JxW(q);
                     for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
                       {
@@ -172,6 +190,17 @@ namespace hyperelastic
           compute_deformation_gradients(data);
           worker(cell, data);
         }
+    // Loads are evaluated on each rank's own cells: agree before throwing.
+    const int bad =
+      Utilities::MPI::max(data.non_finite_load, dof_handler.get_communicator());
+    if (bad != 0)
+      throw InputError(
+        "scene entry '" +
+        (bad == 1
+           ? std::string("Loading/Body force")
+           : boundary_conditions.tractions[bad - 2].subsection + "/Traction") +
+        "' is not a finite number somewhere on the mesh (a division by zero, "
+        "the logarithm of a negative number or similar)");
   }
 
   template <int dim>
@@ -202,6 +231,8 @@ namespace hyperelastic
             }
         }
       add_loads(data, cell, boundary_conditions, t, &cell_external, nullptr);
+      if (data.non_finite_load != 0)
+        return; // reported collectively by for_each_cell
       internal.add(data.dofs, cell_internal);
       external.add(data.dofs, cell_external);
     });
@@ -258,6 +289,8 @@ namespace hyperelastic
         }
       cell_external = 0.;
       add_loads(data, cell, boundary_conditions, t, &cell_external, nullptr);
+      if (data.non_finite_load != 0)
+        return; // reported collectively by for_each_cell
       cell_rhs += cell_external;
       constraints.distribute_local_to_global(
         cell_matrix, cell_rhs, data.dofs, matrix, rhs, true);

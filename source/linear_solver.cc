@@ -9,6 +9,9 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <iomanip>
+#include <sstream>
+
 namespace hyperelastic
 {
   using namespace dealii;
@@ -70,7 +73,10 @@ namespace hyperelastic
                           n_modes * A.local_range().first);
         ml_list.set("null space: type", "pre-computed");
         ml_list.set("null space: dimension", static_cast<int>(n_modes));
-        ml_list.set("null space: vectors", null_space.data());
+        // A rank without rows still must hand ML a valid pointer.
+        static double no_rows = 0.;
+        ml_list.set("null space: vectors",
+                    null_space.empty() ? &no_rows : null_space.data());
       }
     amg.initialize(A, ml_list);
 
@@ -83,12 +89,14 @@ namespace hyperelastic
       }
     catch (const SolverControl::NoConvergence &e)
       {
-        throw ConvergenceFailure(
-          "CG with AMG did not converge: residual " +
-          std::to_string(e.last_residual) + " after " +
-          std::to_string(e.last_step) + " iterations (target " +
-          std::to_string(control.tolerance()) +
-          "); raise 'Linear solver/Max iterations' or use Type = direct");
+        std::ostringstream message;
+        message << std::scientific << std::setprecision(3)
+                << "CG with AMG did not converge: residual " << e.last_residual
+                << " after " << e.last_step << " iterations (target "
+                << control.tolerance()
+                << "); raise 'Linear solver/Max iterations' or use Type = "
+                   "direct";
+        throw ConvergenceFailure(message.str());
       }
     return control.last_step();
   }

@@ -2,6 +2,7 @@
 #include <hyperelastic/error_handling.h>
 #include <hyperelastic/newton_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -72,16 +73,18 @@ namespace hyperelastic
             "have inverted with a model undefined there)" +
             history_text(result));
 
-        // Converged when the residual is negligible in absolute terms, or
-        // small relative to the forces in play and the last update is small
-        // relative to the displacement.
-        const bool absolutely_small =
-          norms.residual <= parameters.absolute_residual_tolerance;
-        const bool relatively_small =
+        // Converged when the residual is small, in absolute terms or
+        // relative to the forces of the run, and the last update is small
+        // relative to the displacements of the run. Both tests are needed:
+        // with small forces (soft materials, small bodies) a residual test
+        // alone would accept an unconverged state.
+        const bool residual_small =
           norms.residual <=
-            parameters.relative_residual_tolerance * norms.scale &&
-          update <= parameters.update_tolerance * system.solution_norm();
-        if (absolutely_small || relatively_small)
+          std::max(parameters.absolute_residual_tolerance,
+                   parameters.relative_residual_tolerance * norms.scale);
+        const bool update_small =
+          update <= parameters.update_tolerance * system.solution_scale();
+        if (residual_small && update_small)
           return result;
 
         system.assemble_linearization(false);

@@ -5,6 +5,8 @@
 #include <hyperelastic/error_handling.h>
 #include <hyperelastic/parameters.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -312,6 +314,20 @@ namespace hyperelastic
                  constants_text,
                  "expected 'name = number' pairs separated by ',', got '" +
                    pair + "'");
+        const bool identifier =
+          (std::isalpha(static_cast<unsigned char>(name[0])) ||
+           name[0] == '_') &&
+          std::all_of(name.begin(), name.end(), [](const char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+          });
+        if (!identifier || name == "x" || name == "y" || name == "z" ||
+            name == "t" || name == "pi")
+          reject("Loading/Constants",
+                 constants_text,
+                 "'" + name +
+                   "' cannot be a constant's name: use letters, digits and "
+                   "'_' (starting with a letter), other than x, y, z, t and "
+                   "pi");
         constants[name] = value;
       }
 
@@ -327,7 +343,15 @@ namespace hyperelastic
             c.subsection  = section;
             for (const auto &name :
                  dealii::Utilities::split_string_list(prm.get("Components")))
-              c.components.push_back(component_index(name));
+              {
+                if (std::count(c.components.begin(),
+                               c.components.end(),
+                               component_index(name)) > 0)
+                  reject(section + "/Components",
+                         prm.get("Components"),
+                         "component " + name + " is listed twice");
+                c.components.push_back(component_index(name));
+              }
             c.expressions = split_expressions(prm.get("Displacement"));
             if (c.components.empty())
               reject(section + "/Components",
@@ -371,21 +395,24 @@ namespace hyperelastic
                       "Newton iterations allowed per load step before the run "
                       "stops with a convergence failure.");
     prm.declare_entry("Absolute residual tolerance",
-                      "1e-12",
+                      "0",
                       Double(0),
                       "Converged when the l2 norm of the residual on the free "
-                      "degrees of freedom is below this (force units), or ...");
+                      "degrees of freedom is below this (force units; 0: no "
+                      "absolute floor) ...");
     prm.declare_entry("Relative residual tolerance",
                       "1e-10",
                       Double(0),
-                      "... or below this times the larger of the l2 norms of "
-                      "the internal and the external force vectors (all "
-                      "degrees of freedom, so reactions count), and ...");
+                      "... or below this times the largest l2 norm of the "
+                      "internal or external force vector seen so far in the "
+                      "run (all degrees of freedom, so reactions count), "
+                      "and ...");
     prm.declare_entry("Update tolerance",
                       "1e-8",
                       Double(0),
                       "... the last Newton update is below this times the "
-                      "l2 norm of the displacement vector.");
+                      "largest l2 norm of the displacement vector reached so "
+                      "far in the run.");
     prm.leave_subsection();
   }
 

@@ -23,8 +23,10 @@ namespace hyperelastic
       : parameters(parameters)
       , comm(comm)
       , pcout(std::cout, print && Utilities::MPI::this_mpi_process(comm) == 0)
-      , timer(comm,
-              pcout,
+      // Not synchronised over ranks: a timer that communicates would block in
+      // the destructor of a TimerOutput::Scope while a rank-local exception
+      // unwinds, before main() can abort the job. Times are rank 0's.
+      , timer(pcout,
               print ? TimerOutput::summary : TimerOutput::never,
               TimerOutput::wall_times)
       , triangulation(comm)
@@ -194,7 +196,8 @@ namespace hyperelastic
   Problem<dim>::apply_update()
   {
     u += update;
-    u_ghosted = u;
+    u_ghosted     = u;
+    solution_size = std::max(solution_size, u.l2_norm());
     return update.l2_norm();
   }
 
@@ -211,15 +214,16 @@ namespace hyperelastic
     residual -= external_force;
     VectorType free_residual = residual;
     homogeneous_constraints.set_zero(free_residual);
-    return {free_residual.l2_norm(),
-            std::max(internal_force.l2_norm(), external_force.l2_norm())};
+    force_scale = std::max(
+      {force_scale, internal_force.l2_norm(), external_force.l2_norm()});
+    return {free_residual.l2_norm(), force_scale};
   }
 
   template <int dim>
   double
-  Problem<dim>::solution_norm() const
+  Problem<dim>::solution_scale() const
   {
-    return u.l2_norm();
+    return solution_size;
   }
 
   // ------------------------------------------------------------- results

@@ -188,6 +188,9 @@ namespace
           scale = std::max(scale, std::abs(v));
         if (print)
           std::cout << tag << ": " << n_ranks << " ranks against 1\n";
+        AssertThrow(serial.values.size() == parallel.values.size(),
+                    ExcMessage(
+                      "the runs produced different numbers of values"));
         for (unsigned int i = 0; i < serial.values.size(); ++i)
           {
             const double error =
@@ -205,8 +208,6 @@ namespace
                         << '\n';
           }
         checked = serial.values.size();
-        if (serial.values.size() != parallel.values.size())
-          ++failed;
       }
     return Utilities::MPI::broadcast(MPI_COMM_WORLD,
                                      std::make_pair(checked, failed),

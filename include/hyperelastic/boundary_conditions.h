@@ -35,6 +35,7 @@ namespace hyperelastic
   {
     boundary_id                            id;
     std::unique_ptr<dealii::Function<dim>> traction;
+    std::string                            subsection;
   };
 
   template <int dim>

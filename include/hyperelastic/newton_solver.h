@@ -14,7 +14,9 @@ namespace hyperelastic
   struct ResidualNorms
   {
     double residual; ///< on the free (unconstrained) unknowns
-    double scale;    ///< size of the forces in play, for the relative test
+    /// Size of the forces of the run so far, for the relative test (a
+    /// running maximum, so that it does not vanish when loads are removed).
+    double scale;
   };
 
   /// What Newton needs from a problem.
@@ -40,8 +42,10 @@ namespace hyperelastic
     virtual ResidualNorms
     residual_norms() = 0;
 
+    /// Size of the solution in the run so far (the largest norm reached),
+    /// for the relative update test.
     virtual double
-    solution_norm() const = 0;
+    solution_scale() const = 0;
   };
 
   /// One row of the Newton table.

@@ -96,7 +96,7 @@ namespace hyperelastic
   struct NewtonParameters
   {
     unsigned int max_iterations              = 20;
-    double       absolute_residual_tolerance = 1e-12;
+    double       absolute_residual_tolerance = 0.;
     double       relative_residual_tolerance = 1e-10;
     double       update_tolerance            = 1e-8;
 

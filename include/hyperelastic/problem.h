@@ -65,7 +65,7 @@ namespace hyperelastic
     ResidualNorms
     residual_norms() override;
     double
-    solution_norm() const override;
+    solution_scale() const override;
 
   private:
     void
@@ -112,6 +112,9 @@ namespace hyperelastic
     VectorType u, u_ghosted, update, rhs;
     VectorType internal_force, external_force, residual;
     double     load_factor = 0.;
+    /// Running maxima of the force and displacement norms (Newton's scales).
+    double force_scale   = 0.;
+    double solution_size = 0.;
 
     std::vector<StepSummary<dim>> step_summaries;
   };
