@@ -1,0 +1,145 @@
+// The assembled tangent against finite differences of the assembled internal
+// forces: for a random displacement field u and random directions v,
+//   || K(u) v - (f_int(u + h v) - f_int(u - h v)) / (2 h) || / || K(u) v ||
+// must be below 1e-6, for P1 and P2, 2D and 3D, every nonlinear model, on
+// the ranks of MPI_COMM_WORLD.
+//
+// Usage: mpirun -np N tangent_fd
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <hyperelastic/boundary_conditions.h>
+#include <hyperelastic/elasticity_operator.h>
+#include <hyperelastic/error_handling.h>
+#include <hyperelastic/mesh.h>
+
+#include <iomanip>
+#include <iostream>
+#include <random>
+
+using namespace hyperelastic;
+using namespace dealii;
+
+namespace
+{
+  /// Random entries in [-amplitude, amplitude] on the owned dofs, the same
+  /// on any number of ranks (seeded by the global dof index).
+  void
+  fill_random(VectorType &v, const double amplitude, const unsigned int seed)
+  {
+    for (const auto i : v.locally_owned_elements())
+      {
+        std::mt19937                           rng(seed * 1000003u + i);
+        std::uniform_real_distribution<double> d(-amplitude, amplitude);
+        v(i) = d(rng);
+      }
+    v.compress(VectorOperation::insert);
+  }
+
+  template <int dim>
+  double
+  worst_error(const std::string &model, const unsigned int degree)
+  {
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    MeshParameters mesh;
+    mesh.lower_corner    = std::vector<double>(dim, 0.);
+    mesh.upper_corner    = std::vector<double>(dim, 1.);
+    mesh.upper_corner[0] = 2.;
+    mesh.subdivisions    = std::vector<unsigned int>(dim, 2);
+    parallel::fullydistributed::Triangulation<dim> tria(comm);
+    const auto ids = create_mesh(mesh, tria);
+
+    const FESystem<dim>  fe(FE_SimplexP<dim>(degree), dim);
+    const MappingFE<dim> mapping(FE_SimplexP<dim>(1));
+    DoFHandler<dim>      dof_handler(tria);
+    dof_handler.distribute_dofs(fe);
+    const IndexSet owned = dof_handler.locally_owned_dofs();
+    IndexSet       relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+
+    LameParameters lame;
+    lame.mu             = 1.;
+    lame.lambda         = 2.;
+    const auto material = create_material<dim>(model, lame);
+    // Loads do not enter the tangent; a traction checks they stay out of it.
+    LoadingParameters loading;
+    loading.tractions.push_back(
+      {1, std::vector<std::string>(dim, "0.3*t"), "Traction 1"});
+    const BoundaryConditions<dim> bc(loading, ids);
+    const ElasticityOperator<dim> op(dof_handler, mapping, *material, bc);
+
+    DynamicSparsityPattern dsp(relevant);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+    MatrixType K;
+    K.reinit(owned, owned, dsp, comm);
+    AffineConstraints<double> none(relevant);
+    none.close();
+
+    VectorType u(owned, comm), v(owned, comm), Kv(owned, comm),
+      rhs(owned, comm), f_plus(owned, comm), f_minus(owned, comm),
+      external(owned, comm);
+    VectorType u_ghosted(owned, relevant, comm);
+    fill_random(u, 0.05, 1);
+    u_ghosted = u;
+    op.assemble_system(u_ghosted, 1., none, K, rhs);
+
+    double worst = 0.;
+    for (unsigned int direction = 0; direction < 3; ++direction)
+      {
+        fill_random(v, 1., 10 + direction);
+        K.vmult(Kv, v);
+        const double h = 1e-6;
+        VectorType   w(owned, comm);
+        w = u;
+        w.add(h, v);
+        u_ghosted = w;
+        op.assemble_forces(u_ghosted, 1., f_plus, external);
+        w.add(-2. * h, v);
+        u_ghosted = w;
+        op.assemble_forces(u_ghosted, 1., f_minus, external);
+        f_plus -= f_minus;
+        f_plus /= 2. * h;
+        f_plus -= Kv;
+        worst = std::max(worst, f_plus.l2_norm() / Kv.l2_norm());
+      }
+    return worst;
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool   print  = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  unsigned int passed = 0, failed = 0;
+  const int    status = run_and_report(
+    [&]() {
+      for (const std::string model :
+           {"St. Venant-Kirchhoff", "corotational", "neo-Hookean"})
+        for (const unsigned int degree : {1u, 2u})
+          for (const int dim : {2, 3})
+            {
+              const double error = dim == 2 ? worst_error<2>(model, degree)
+                                               : worst_error<3>(model, degree);
+              const bool   ok    = error < 1e-6;
+              (ok ? passed : failed)++;
+              if (print)
+                std::cout << "  " << std::left << std::setw(22) << model << " P"
+                          << degree << ' ' << dim << "D  " << std::right
+                          << std::scientific << std::setprecision(2) << error
+                          << " < 1e-6" << (ok ? "  PASS" : "  FAIL") << '\n';
+            }
+    },
+    MPI_COMM_WORLD);
+  if (print)
+    std::cout << passed << " passed, " << failed << " failed" << std::endl;
+  return (status != 0 || failed > 0 || passed == 0) ? 1 : 0;
+}
