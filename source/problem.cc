@@ -167,17 +167,12 @@ namespace hyperelastic
                                             load_factor,
                                             u_ghosted,
                                             false,
-                                            constraints);
-    elasticity->assemble_system(u_ghosted,
-                                load_factor,
-                                impose_constraint_increment
-                                  ? constraints
-                                  : homogeneous_constraints,
-                                tangent,
-                                rhs);
-    // Remember which constraints the update must satisfy.
-    if (!impose_constraint_increment)
-      constraints.copy_from(homogeneous_constraints);
+                                            increment_constraints);
+    // The update of this linearization must satisfy these constraints.
+    active_constraints = impose_constraint_increment ? &increment_constraints
+                                                     : &homogeneous_constraints;
+    elasticity->assemble_system(
+      u_ghosted, load_factor, *active_constraints, tangent, rhs);
   }
 
   template <int dim>
@@ -187,7 +182,7 @@ namespace hyperelastic
     TimerOutput::Scope scope(timer, "linear solve");
     update                        = 0.;
     const unsigned int iterations = linear_solver.solve(tangent, update, rhs);
-    constraints.distribute(update);
+    active_constraints->distribute(update);
     return iterations;
   }
 

@@ -96,9 +96,12 @@ namespace hyperelastic
     LinearSolver                             linear_solver;
     NewtonSolver                             newton;
 
-    /// Constraints of the current linearization and their homogeneous twin.
-    dealii::AffineConstraints<double> constraints;
-    dealii::AffineConstraints<double> homogeneous_constraints;
+    /// Dirichlet constraints: with the increment to the prescribed values
+    /// (first iteration of a load step) and homogeneous (later iterations);
+    /// active_constraints points at the ones of the current linearization.
+    dealii::AffineConstraints<double>        increment_constraints;
+    dealii::AffineConstraints<double>        homogeneous_constraints;
+    const dealii::AffineConstraints<double> *active_constraints = nullptr;
 
     /// The distinct Dirichlet boundary ids and, for each, the owned dofs on
     /// it whose component is prescribed there, with that component (for the
