@@ -8,8 +8,11 @@
 
 #include <hyperelastic/elasticity_operator.h>
 #include <hyperelastic/error_handling.h>
+#include <hyperelastic/materials/tangent_projection.h>
 
 #include <cmath>
+#include <limits>
+#include <sstream>
 
 namespace hyperelastic
 {
@@ -89,13 +92,23 @@ namespace hyperelastic
         }
     }
 
+    template <typename Container>
     bool
-    all_finite(const Vector<double> &v)
+    all_finite(const Container &v)
     {
       for (const double x : v)
         if (!std::isfinite(x))
           return false;
       return true;
+    }
+
+    template <int dim>
+    std::string
+    point_text(const Point<dim> &p)
+    {
+      std::ostringstream s;
+      s << "(" << p << ")";
+      return s.str();
     }
 
     /// Adds the body force and traction contributions (force vectors and
@@ -181,15 +194,30 @@ namespace hyperelastic
                        stress_quadrature,
                        load_quadrature,
                        face_quadrature);
+    // A failure on one cell (a model undefined at its F, an exception in a
+    // material) may happen on one rank only: it is caught here and reported
+    // on every rank, so that all of them cut back or stop together.
+    std::string error;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell->get_dof_indices(data.dofs);
-          cell->get_dof_values(u, data.u);
-          data.stress_values.reinit(cell);
-          compute_deformation_gradients(data);
-          worker(cell, data);
+          try
+            {
+              cell->get_dof_indices(data.dofs);
+              cell->get_dof_values(u, data.u);
+              data.stress_values.reinit(cell);
+              compute_deformation_gradients(data);
+              worker(cell, data);
+            }
+          catch (const std::exception &e)
+            {
+              error = "cell " + std::to_string(cell->active_cell_index()) +
+                      " at " + point_text(cell->center()) + ": " +
+                      exception_message(e);
+              break;
+            }
         }
+    throw_convergence_failure_if_any(error, dof_handler.get_communicator());
     // Loads are evaluated on each rank's own cells: agree before throwing.
     const int bad =
       Utilities::MPI::max(data.non_finite_load, dof_handler.get_communicator());
@@ -204,7 +232,7 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
+  double
   ElasticityOperator<dim>::assemble_forces(const VectorType &u,
                                            const double      t,
                                            VectorType       &internal,
@@ -215,21 +243,33 @@ namespace hyperelastic
     const FiniteElement<dim> &fe = dof_handler.get_fe();
     Vector<double>            cell_internal(fe.dofs_per_cell);
     Vector<double>            cell_external(fe.dofs_per_cell);
+    const double modulus_scale = std::abs(material.parameters().mu) +
+                                 std::abs(material.parameters().lambda);
+    // Round-off of the internal forces: each stress entry carries an error of
+    // about eps (|mu| + |lambda|)(1 + |F|^2) (lambda ln J cancels mu F at
+    // small strain), spread by the shape gradients; cells add up randomly.
+    double magnitude_squared = 0.;
     for_each_cell(u, [&](const auto &cell, CellData<dim> &data) {
       cell_internal                  = 0.;
       cell_external                  = 0.;
+      double               magnitude = 0.;
       const FEValues<dim> &fe_values = data.stress_values;
       for (unsigned int q = 0; q < data.F.size(); ++q)
         {
           const Tensor<2, dim> P   = material.first_piola_kirchhoff(data.F[q]);
           const double         JxW = fe_values.JxW(q);
+          double               gradient_sum = 0.;
           for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
             {
-              const unsigned int c = fe.system_to_component_index(i).first;
-              cell_internal[i] +=
-                (P[c] * fe_values.shape_grad_component(i, q, c)) * JxW;
+              const unsigned int c    = fe.system_to_component_index(i).first;
+              const auto         grad = fe_values.shape_grad_component(i, q, c);
+              cell_internal[i] += (P[c] * grad) * JxW;
+              gradient_sum += grad.norm();
             }
+          magnitude +=
+            modulus_scale * (1. + data.F[q].norm_square()) * gradient_sum * JxW;
         }
+      magnitude_squared += magnitude * magnitude;
       add_loads(data, cell, boundary_conditions, t, &cell_external, nullptr);
       if (data.non_finite_load != 0)
         return; // reported collectively by for_each_cell
@@ -238,6 +278,9 @@ namespace hyperelastic
     });
     internal.compress(VectorOperation::add);
     external.compress(VectorOperation::add);
+    return std::numeric_limits<double>::epsilon() *
+           std::sqrt(Utilities::MPI::sum(magnitude_squared,
+                                         dof_handler.get_communicator()));
   }
 
   template <int dim>
@@ -247,7 +290,8 @@ namespace hyperelastic
     const double                     t,
     const AffineConstraints<double> &constraints,
     MatrixType                      &matrix,
-    VectorType                      &rhs) const
+    VectorType                      &rhs,
+    const bool                       project_tangent) const
   {
     matrix                       = 0.;
     rhs                          = 0.;
@@ -270,6 +314,8 @@ namespace hyperelastic
       for (unsigned int q = 0; q < data.F.size(); ++q)
         {
           material.stress_and_tangent(data.F[q], P, A);
+          if (project_tangent)
+            project_to_positive_semidefinite(A);
           const double JxW = fe_values.JxW(q);
           for (unsigned int i = 0; i < n; ++i)
             grad[i] = fe_values.shape_grad_component(i, q, component[i]);
@@ -292,6 +338,11 @@ namespace hyperelastic
       if (data.non_finite_load != 0)
         return; // reported collectively by for_each_cell
       cell_rhs += cell_external;
+      // Checked before deal.II sees them (its debug build aborts on NaN).
+      if (!all_finite(cell_rhs) || !all_finite(cell_matrix))
+        throw std::domain_error(
+          "non-finite stress or tangent (the model may be undefined for "
+          "this element's deformation, e.g. J <= 0)");
       constraints.distribute_local_to_global(
         cell_matrix, cell_rhs, data.dofs, matrix, rhs, true);
     });
@@ -300,20 +351,48 @@ namespace hyperelastic
   }
 
   template <int dim>
-  double
-  ElasticityOperator<dim>::total_energy(const VectorType &u,
-                                        const double      t) const
+  EnergyEvaluation
+  ElasticityOperator<dim>::evaluate(const VectorType &u,
+                                    const double      t,
+                                    const bool        with_energy) const
   {
-    double energy = 0.;
+    // The energy density is computed from terms of the size of the moduli
+    // (mu (I1 - 3): I1 is about 3), so its round-off is eps times them, not
+    // eps times psi; the same holds for the work of the loads.
+    const double modulus_scale = std::abs(material.parameters().mu) +
+                                 std::abs(material.parameters().lambda);
+    constexpr double round_off = 1e-13;
+    double           energy = 0., magnitude = 0.;
+    double           min_J = std::numeric_limits<double>::infinity();
     for_each_cell(u, [&](const auto &cell, CellData<dim> &data) {
       for (unsigned int q = 0; q < data.F.size(); ++q)
-        energy +=
-          material.energy_density(data.F[q]) * data.stress_values.JxW(q);
+        {
+          min_J = std::min(min_J, static_cast<double>(determinant(data.F[q])));
+          if (!with_energy)
+            continue;
+          const double JxW = data.stress_values.JxW(q);
+          const double psi = material.energy_density(data.F[q]);
+          energy += psi * JxW;
+          magnitude +=
+            (std::abs(psi) + modulus_scale * (1. + data.F[q].norm_square())) *
+            JxW;
+        }
+      if (!with_energy)
+        return;
       double work = 0.;
       add_loads(data, cell, boundary_conditions, t, nullptr, &work);
       energy -= work;
+      magnitude += std::abs(work);
     });
-    return Utilities::MPI::sum(energy, dof_handler.get_communicator());
+    const MPI_Comm   comm = dof_handler.get_communicator();
+    EnergyEvaluation result;
+    result.min_J = Utilities::MPI::min(min_J, comm);
+    if (with_energy)
+      {
+        result.energy = Utilities::MPI::sum(energy, comm);
+        result.noise  = round_off * Utilities::MPI::sum(magnitude, comm);
+      }
+    return result;
   }
 
   namespace

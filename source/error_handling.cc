@@ -46,6 +46,24 @@ namespace hyperelastic
       throw InputError(message);
   }
 
+  void
+  throw_convergence_failure_if_any(const std::string &local_error,
+                                   const MPI_Comm     comm)
+  {
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int first_failed =
+      dealii::Utilities::MPI::min(local_error.empty() ? n_ranks : rank, comm);
+    if (first_failed == n_ranks)
+      return;
+    const std::string message =
+      dealii::Utilities::MPI::broadcast(comm, local_error, first_failed);
+    throw ConvergenceFailure(
+      (n_ranks > 1 ? "on MPI rank " + std::to_string(first_failed) + ", "
+                   : std::string()) +
+      message);
+  }
+
   int
   run_and_report(const std::function<void()> &body, const MPI_Comm comm)
   {

@@ -1,4 +1,5 @@
-// Newton iteration with residual and update tests and a printed table.
+// Newton iteration with a backtracking line search on the total potential
+// energy, residual and update tests, and a printed table.
 #include <hyperelastic/error_handling.h>
 #include <hyperelastic/newton_solver.h>
 
@@ -18,6 +19,15 @@ namespace hyperelastic
     return n;
   }
 
+  unsigned int
+  NewtonResult::backtracks() const
+  {
+    unsigned int n = 0;
+    for (const auto &row : history)
+      n += row.backtracks;
+    return n;
+  }
+
   NewtonSolver::NewtonSolver(const NewtonParameters    &parameters,
                              dealii::ConditionalOStream pcout,
                              const bool                 verbose)
@@ -29,49 +39,176 @@ namespace hyperelastic
 
   namespace
   {
+    const std::string header = "   iteration      residual        update"
+                               "      step        energy     min J  lin.its";
+
     std::string
     format_row(const NewtonIteration &row)
     {
       std::ostringstream s;
       s << std::setw(8) << row.iteration << std::scientific
-        << std::setprecision(3) << std::setw(14) << row.residual
-        << std::setw(14) << row.update << std::setw(10)
-        << row.linear_iterations;
+        << std::setprecision(3) << std::setw(18) << row.residual
+        << std::setw(14) << row.update << std::defaultfloat
+        << std::setprecision(4) << std::setw(10) << row.step_length
+        << std::scientific;
+      // Quantities a plain Newton step does not compute are left blank.
+      s << std::setprecision(6) << std::setw(14);
+      if (std::isfinite(row.energy))
+        s << row.energy;
+      else
+        s << "";
+      s << std::defaultfloat << std::setprecision(3) << std::setw(10);
+      if (std::isfinite(row.min_J))
+        s << row.min_J;
+      else
+        s << "";
+      s << std::setw(9) << row.linear_iterations
+        << (row.projected ? "  projected" : "");
       return s.str();
     }
-
-    std::string
-    history_text(const NewtonResult &result)
-    {
-      std::string text = "\n   iteration      residual        update  lin.its";
-      for (const auto &row : result.history)
-        text += "\n" + format_row(row);
-      return text;
-    }
   } // namespace
+
+  std::string
+  NewtonSolver::table(const NewtonResult &result)
+  {
+    std::string text = header;
+    for (const auto &row : result.history)
+      text += "\n" + format_row(row);
+    return text;
+  }
+
+  bool
+  NewtonSolver::line_search(NonlinearSystem  &system,
+                            const bool        test_energy,
+                            const TrialPoint &current,
+                            NewtonIteration  &row,
+                            std::string      &failure) const
+  {
+    using Check       = NonlinearSystem::TrialCheck;
+    const Check check = !parameters.line_search ? Check::none
+                        : test_energy           ? Check::energy
+                                                : Check::admissibility;
+    // Sufficient decrease E(alpha) <= E(0) + c alpha dE/dalpha(0).
+    const double slope = test_energy ? system.directional_derivative() : 0.;
+    if (test_energy && !(slope < 0.))
+      {
+        // An indefinite tangent can give a direction along which the energy
+        // grows: no step length helps.
+        failure = "the Newton direction is not a descent direction (the "
+                  "tangent is indefinite)";
+        return false;
+      }
+
+    row.backtracks = 0;
+    for (double alpha = 1.;; alpha *= 0.5)
+      {
+        const TrialPoint trial = system.evaluate_trial(alpha, check);
+        bool             ok    = trial.admissible;
+        if (ok && test_energy)
+          // Near the solution the decrease is below the energy's round-off;
+          // the noise allowance keeps Newton's full steps there.
+          ok = trial.energy <= current.energy +
+                                 parameters.armijo_constant * alpha * slope +
+                                 current.energy_noise + trial.energy_noise;
+        if (ok)
+          {
+            row.step_length   = alpha;
+            row.energy_tested = test_energy;
+            row.energy_before = current.energy;
+            row.energy        = trial.energy;
+            row.energy_noise  = trial.energy_noise;
+            row.min_J         = trial.min_J;
+            return true;
+          }
+        ++row.backtracks;
+        if (0.5 * alpha < parameters.minimum_step_length)
+          {
+            std::ostringstream reason;
+            reason << "line search failed: no step length down to "
+                   << parameters.minimum_step_length
+                   << " (Newton/Minimum step length) gives "
+                   << (trial.admissible
+                         ? "enough decrease of the energy"
+                         : "an admissible state (elements would invert or the "
+                           "energy is not finite)");
+            failure = reason.str();
+            return false;
+          }
+      }
+  }
 
   NewtonResult
   NewtonSolver::solve(NonlinearSystem &system) const
   {
     NewtonResult result;
     if (verbose)
-      pcout << "   iteration      residual        update  lin.its" << std::endl;
+      pcout << header << std::endl;
 
-    system.assemble_linearization(true);
+    // True until a full step has moved the constrained unknowns to their
+    // prescribed values. Until then the energy cannot be compared between
+    // iterates (each satisfies different constraints), so the line search
+    // only keeps the iterates admissible.
+    bool       moving_constraints = true;
+    TrialPoint current; // the current iterate, energy unknown yet
     for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
       {
-        const unsigned int  linear_its = system.solve_linearization();
-        const double        update     = system.apply_update();
-        const ResidualNorms norms      = system.residual_norms();
-        result.history.push_back({it, norms.residual, update, linear_its});
-        if (verbose)
-          pcout << format_row(result.history.back()) << std::endl;
+        const bool fallback =
+          parameters.tangent == NewtonTangent::exact_then_projected;
+        NewtonIteration row;
+        row.projected = parameters.tangent == NewtonTangent::projected;
+        unsigned int linear_its = 0;
+        for (;;)
+          {
+            std::string failure;
+            try
+              {
+                moving_constraints =
+                  system.assemble_linearization(moving_constraints,
+                                                row.projected);
+                linear_its += system.solve_linearization();
 
-        if (!std::isfinite(norms.residual) || !std::isfinite(update))
+                const bool test_energy =
+                  parameters.line_search && !moving_constraints;
+                if (test_energy && !std::isfinite(current.energy))
+                  current =
+                    system.evaluate_trial(0.,
+                                          NonlinearSystem::TrialCheck::energy);
+                if (line_search(system, test_energy, current, row, failure))
+                  break;
+              }
+            catch (const ConvergenceFailure &e)
+              {
+                // A Krylov failure (an indefinite tangent can break CG).
+                failure = e.what();
+              }
+            if (!fallback || row.projected)
+              throw ConvergenceFailure(failure + " in Newton iteration " +
+                                       std::to_string(it) + "\n" +
+                                       table(result));
+            // Repeat this iteration from the same iterate with the projected
+            // tangent, whose direction descends.
+            system.evaluate_trial(0., NonlinearSystem::TrialCheck::none);
+            row.projected = true;
+          }
+        row.iteration         = it;
+        row.linear_iterations = linear_its;
+        row.update            = system.accept_trial();
+        if (moving_constraints && row.step_length == 1.)
+          moving_constraints = false;
+        current.energy       = row.energy;
+        current.energy_noise = row.energy_noise;
+
+        const ResidualNorms norms = system.residual_norms();
+        row.residual              = norms.residual;
+        result.history.push_back(row);
+        if (verbose)
+          pcout << format_row(row) << std::endl;
+
+        if (!std::isfinite(norms.residual) || !std::isfinite(row.update))
           throw ConvergenceFailure(
             "Newton produced a non-finite residual or update (an element may "
-            "have inverted with a model undefined there)" +
-            history_text(result));
+            "have inverted with a model undefined there)\n" +
+            table(result));
 
         // Converged when the residual is small, in absolute terms or
         // relative to the forces of the run, and the last update is small
@@ -80,18 +217,20 @@ namespace hyperelastic
         // alone would accept an unconverged state.
         const bool residual_small =
           norms.residual <=
-          std::max(parameters.absolute_residual_tolerance,
-                   parameters.relative_residual_tolerance * norms.scale);
+          std::max({parameters.absolute_residual_tolerance,
+                    parameters.relative_residual_tolerance * norms.scale,
+                    norms.noise});
         const bool update_small =
-          update <= parameters.update_tolerance * system.solution_scale();
-        if (residual_small && update_small)
-          return result;
-
-        system.assemble_linearization(false);
+          row.update <= parameters.update_tolerance * system.solution_scale();
+        if (!moving_constraints && residual_small && update_small)
+          {
+            system.verify_converged_state();
+            return result;
+          }
       }
     throw ConvergenceFailure("Newton did not converge in " +
                              std::to_string(parameters.max_iterations) +
-                             " iterations (Newton/Max iterations)" +
-                             history_text(result));
+                             " iterations (Newton/Max iterations)\n" +
+                             table(result));
   }
 } // namespace hyperelastic

@@ -48,6 +48,15 @@ namespace hyperelastic
   }
 
   template <int dim>
+  std::string
+  OutputWriter<dim>::pvtu_file(const unsigned int step) const
+  {
+    // The name deal.II's write_vtu_with_pvtu_record gives with 4 digits.
+    return parameters.directory + "/" + parameters.base_name + "_" +
+           Utilities::int_to_string(step, 4) + ".pvtu";
+  }
+
+  template <int dim>
   void
   OutputWriter<dim>::write_fields(const unsigned int     step,
                                   const double           load_factor,
@@ -114,6 +123,7 @@ namespace hyperelastic
             csv << ",reaction_" << id << '_' << axes[d];
         for (unsigned int d = 0; d < dim; ++d)
           csv << ",deformed_min_" << axes[d] << ",deformed_max_" << axes[d];
+        csv << ",load_increment,cut_backs,line_search_backtracks";
         csv << '\n';
       }
     csv << s.step << ',' << std::setprecision(16) << s.load_factor << ','
@@ -124,6 +134,7 @@ namespace hyperelastic
         csv << ',' << force[d];
     for (unsigned int d = 0; d < dim; ++d)
       csv << ',' << s.deformed_min[d] << ',' << s.deformed_max[d];
+    csv << ',' << s.load_increment << ',' << s.cut_backs << ',' << s.backtracks;
     csv << std::endl;
   }
 

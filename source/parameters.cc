@@ -162,7 +162,11 @@ namespace hyperelastic
                       Selection(material_model_names()),
                       "Constitutive model: 'linear elastic' (small strain), "
                       "'St. Venant-Kirchhoff', 'corotational' (ARAP when "
-                      "lambda = 0) or 'neo-Hookean'.");
+                      "lambda = 0), 'neo-Hookean' (log barrier: undefined "
+                      "for inverted elements) or 'stable neo-Hookean' (Smith, "
+                      "de Goes, Kim 2018; finite for inverted elements; the "
+                      "same small-strain E and nu). See README, 'Choosing a "
+                      "model'.");
     prm.declare_entry("Elastic constants",
                       "Young's modulus and Poisson's ratio",
                       Selection("Young's modulus and Poisson's ratio|Lame"),
@@ -233,7 +237,8 @@ namespace hyperelastic
                       "10",
                       Integer(1),
                       "The load factor t goes from 0 to 1 in this many equal "
-                      "steps; every expression below may use t.");
+                      "steps (smaller ones where Newton needs them: see "
+                      "'Load stepping'); every expression below may use t.");
     prm.declare_entry("Body force",
                       "",
                       Anything(),
@@ -413,6 +418,38 @@ namespace hyperelastic
                       "... the last Newton update is below this times the "
                       "largest l2 norm of the displacement vector reached so "
                       "far in the run.");
+    prm.declare_entry("Line search",
+                      "true",
+                      Bool(),
+                      "Backtrack along each Newton direction (halving the "
+                      "step) until the total potential energy decreases "
+                      "enough (Armijo) and no element leaves the model's "
+                      "domain (J <= 0 for neo-Hookean). While prescribed "
+                      "displacements are still being imposed only the "
+                      "second test applies. false: plain Newton.");
+    prm.declare_entry("Armijo constant",
+                      "1e-4",
+                      Double(0, 0.5),
+                      "Sufficient decrease: a step of length a is accepted "
+                      "if the energy drops by at least this times a times "
+                      "the directional derivative.");
+    prm.declare_entry("Minimum step length",
+                      "1e-4",
+                      Double(0, 1),
+                      "The line search fails (and the load step is cut "
+                      "back) when the step length would fall below this.");
+    prm.declare_entry(
+      "Tangent",
+      "exact, projected on failure",
+      Selection("exact|projected|exact, projected on failure"),
+      "'exact': full Newton with the exact tangent. 'projected': projected "
+      "Newton: the negative eigenvalues of dP/dF at every quadrature point "
+      "are clamped to zero, so the tangent is positive semi-definite and "
+      "every direction descends (robust under extreme compression, but only "
+      "linearly convergent where the exact tangent is indefinite). 'exact, "
+      "projected on failure': full Newton, and an iteration whose direction "
+      "does not descend or whose line search fails is repeated with the "
+      "projected tangent.");
     prm.leave_subsection();
   }
 
@@ -424,10 +461,64 @@ namespace hyperelastic
     absolute_residual_tolerance = prm.get_double("Absolute residual tolerance");
     relative_residual_tolerance = prm.get_double("Relative residual tolerance");
     update_tolerance            = prm.get_double("Update tolerance");
+    line_search                 = prm.get_bool("Line search");
+    armijo_constant             = prm.get_double("Armijo constant");
+    minimum_step_length         = prm.get_double("Minimum step length");
+    const std::string tangent_name = prm.get("Tangent");
+    tangent = tangent_name == "exact" ? NewtonTangent::exact
+              : tangent_name == "projected"
+                ? NewtonTangent::projected
+                : NewtonTangent::exact_then_projected;
+    if (!(minimum_step_length > 0.))
+      reject("Newton/Minimum step length",
+             prm.get("Minimum step length"),
+             "must be positive");
     if (absolute_residual_tolerance == 0. && relative_residual_tolerance == 0.)
       reject("Newton/Relative residual tolerance",
              "0",
              "absolute and relative residual tolerance cannot both be zero");
+    prm.leave_subsection();
+  }
+
+  // ---------------------------------------------------------- Load stepping
+  void
+  LoadSteppingParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load stepping");
+    prm.declare_entry("Adaptive",
+                      "true",
+                      Bool(),
+                      "When Newton fails in a load step (iteration limit, "
+                      "line-search failure, linear-solver failure, NaN, "
+                      "inverted elements at convergence), return to the last "
+                      "converged state and retry with half the load "
+                      "increment; after two easy steps in a row double it "
+                      "again, up to 1 / 'Loading/Number of load steps'. "
+                      "false: stop at the first failure.");
+    prm.declare_entry("Minimum increment",
+                      "1e-4",
+                      Double(0, 1),
+                      "Smallest load-factor increment; below it the run "
+                      "stops with a convergence failure (exit status 3).");
+    prm.declare_entry("Easy step iterations",
+                      "6",
+                      Integer(1),
+                      "A load step converged in at most this many Newton "
+                      "iterations counts as easy.");
+    prm.leave_subsection();
+  }
+
+  void
+  LoadSteppingParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load stepping");
+    adaptive             = prm.get_bool("Adaptive");
+    minimum_increment    = prm.get_double("Minimum increment");
+    easy_step_iterations = prm.get_integer("Easy step iterations");
+    if (!(minimum_increment > 0.))
+      reject("Load stepping/Minimum increment",
+             prm.get("Minimum increment"),
+             "must be positive");
     prm.leave_subsection();
   }
 
@@ -539,6 +630,7 @@ namespace hyperelastic
     MaterialParameters::declare(prm);
     LoadingParameters::declare(prm);
     NewtonParameters::declare(prm);
+    LoadSteppingParameters::declare(prm);
     LinearSolverParameters::declare(prm);
     OutputParameters::declare(prm);
   }
@@ -551,6 +643,7 @@ namespace hyperelastic
     material.parse(prm);
     loading.parse(prm);
     newton.parse(prm);
+    load_stepping.parse(prm);
     linear_solver.parse(prm);
     output.parse(prm);
 

@@ -81,8 +81,14 @@ namespace hyperelastic
                                                relevant_dofs);
     tangent.reinit(owned_dofs, owned_dofs, dsp, comm);
 
-    for (VectorType *v :
-         {&u, &update, &rhs, &internal_force, &external_force, &residual})
+    for (VectorType *v : {&u,
+                          &update,
+                          &trial,
+                          &rhs,
+                          &internal_force,
+                          &external_force,
+                          &residual,
+                          &converged.u})
       v->reinit(owned_dofs, comm);
     u_ghosted.reinit(owned_dofs, relevant_dofs, comm);
 
@@ -152,27 +158,60 @@ namespace hyperelastic
                 ? parameters.linear_solver.direct_solver
                 : std::string("CG with ML AMG (rigid-body near-null space)"))
           << std::endl;
+    warn_about_volumetric_locking();
+  }
+
+  template <int dim>
+  void
+  Problem<dim>::warn_about_volumetric_locking() const
+  {
+    // Linear simplices have too few displacement modes to deform at nearly
+    // constant volume: when lambda >> mu they lock (far too stiff in
+    // bending and shear). Warn; it is not an error.
+    const double nu = parameters.material.lame.poisson_ratio();
+    if (parameters.problem.fe_degree == 1 && nu > 0.45)
+      pcout << "warning: Poisson's ratio " << nu
+            << " > 0.45 with P1 elements: expect volumetric locking (too "
+               "stiff in bending and shear). Use 'Problem/Finite element "
+               "degree = 2' or a finer mesh, and check the answer does not "
+               "change."
+            << std::endl;
   }
 
   // ------------------------------------------------------ NonlinearSystem
   template <int dim>
-  void
-  Problem<dim>::assemble_linearization(const bool impose_constraint_increment)
+  bool
+  Problem<dim>::assemble_linearization(const bool impose_constraint_increment,
+                                       const bool positive_semidefinite)
   {
     TimerOutput::Scope scope(timer, "assembly");
+    bool               moves_constraints = false;
     if (impose_constraint_increment)
-      boundary_conditions->make_constraints(mapping,
-                                            dof_handler,
-                                            relevant_dofs,
-                                            load_factor,
-                                            u_ghosted,
-                                            false,
-                                            increment_constraints);
+      {
+        // Prescribed minus current values: after a shortened step the next
+        // linearization carries what is still missing.
+        boundary_conditions->make_constraints(mapping,
+                                              dof_handler,
+                                              relevant_dofs,
+                                              load_factor,
+                                              u_ghosted,
+                                              false,
+                                              increment_constraints);
+        double largest = 0.;
+        for (const auto &line : increment_constraints.get_lines())
+          largest = std::max(largest, std::abs(line.inhomogeneity));
+        moves_constraints = Utilities::MPI::max(largest, comm) > 0.;
+      }
     // The update of this linearization must satisfy these constraints.
-    active_constraints = impose_constraint_increment ? &increment_constraints
-                                                     : &homogeneous_constraints;
-    elasticity->assemble_system(
-      u_ghosted, load_factor, *active_constraints, tangent, rhs);
+    active_constraints =
+      moves_constraints ? &increment_constraints : &homogeneous_constraints;
+    elasticity->assemble_system(u_ghosted,
+                                load_factor,
+                                *active_constraints,
+                                tangent,
+                                rhs,
+                                positive_semidefinite);
+    return moves_constraints;
   }
 
   template <int dim>
@@ -188,12 +227,47 @@ namespace hyperelastic
 
   template <int dim>
   double
-  Problem<dim>::apply_update()
+  Problem<dim>::directional_derivative() const
   {
-    u += update;
-    u_ghosted     = u;
+    // rhs = -(f_int - f_ext) on the free rows (zero on constrained rows,
+    // where the update is zero too).
+    return -(rhs * update);
+  }
+
+  template <int dim>
+  TrialPoint
+  Problem<dim>::evaluate_trial(const double alpha, const TrialCheck check)
+  {
+    TimerOutput::Scope scope(timer, "line search");
+    trial = u;
+    trial.add(alpha, update);
+    u_ghosted   = trial;
+    step_length = alpha;
+
+    TrialPoint point;
+    if (check == TrialCheck::none)
+      return point;
+    const EnergyEvaluation e =
+      elasticity->evaluate(u_ghosted, load_factor, check == TrialCheck::energy);
+    point.min_J = e.min_J;
+    if (check == TrialCheck::energy)
+      {
+        point.energy       = e.energy;
+        point.energy_noise = e.noise;
+      }
+    point.admissible =
+      (material->defined_for_inverted_elements() || e.min_J > 0.) &&
+      (check != TrialCheck::energy || std::isfinite(e.energy));
+    return point;
+  }
+
+  template <int dim>
+  double
+  Problem<dim>::accept_trial()
+  {
+    u             = trial;
     solution_size = std::max(solution_size, u.l2_norm());
-    return update.l2_norm();
+    return step_length * update.l2_norm();
   }
 
   template <int dim>
@@ -201,17 +275,17 @@ namespace hyperelastic
   Problem<dim>::residual_norms()
   {
     TimerOutput::Scope scope(timer, "residual");
-    elasticity->assemble_forces(u_ghosted,
-                                load_factor,
-                                internal_force,
-                                external_force);
-    residual = internal_force;
+    const double       noise = elasticity->assemble_forces(u_ghosted,
+                                                     load_factor,
+                                                     internal_force,
+                                                     external_force);
+    residual                 = internal_force;
     residual -= external_force;
     VectorType free_residual = residual;
     homogeneous_constraints.set_zero(free_residual);
     force_scale = std::max(
       {force_scale, internal_force.l2_norm(), external_force.l2_norm()});
-    return {free_residual.l2_norm(), force_scale};
+    return {free_residual.l2_norm(), force_scale, noise};
   }
 
   template <int dim>
@@ -221,19 +295,71 @@ namespace hyperelastic
     return solution_size;
   }
 
+  template <int dim>
+  void
+  Problem<dim>::verify_converged_state()
+  {
+    // An equilibrium with inverted elements is not a physical state, even
+    // for models that are defined there (St. Venant-Kirchhoff past its
+    // compressive limit point, or a corotational element turned inside out).
+    converged_min_J = elasticity->evaluate(u_ghosted, load_factor, false).min_J;
+    if (!(converged_min_J > 0.))
+      {
+        std::ostringstream message;
+        message << "Newton converged to a state with inverted elements "
+                << "(smallest J = " << converged_min_J
+                << "): the load exceeds what the model can carry";
+        throw ConvergenceFailure(message.str());
+      }
+  }
+
+  // ------------------------------------------------------- SteppedSystem
+  template <int dim>
+  void
+  Problem<dim>::set_load_factor(const double t)
+  {
+    load_factor = t;
+  }
+
+  template <int dim>
+  void
+  Problem<dim>::store_converged_state()
+  {
+    converged.u             = u;
+    converged.force_scale   = force_scale;
+    converged.solution_size = solution_size;
+  }
+
+  template <int dim>
+  void
+  Problem<dim>::restore_converged_state()
+  {
+    // The scales too: a diverging attempt must not loosen the tests of the
+    // next one.
+    u             = converged.u;
+    u_ghosted     = u;
+    force_scale   = converged.force_scale;
+    solution_size = converged.solution_size;
+  }
+
   // ------------------------------------------------------------- results
   template <int dim>
   StepSummary<dim>
-  Problem<dim>::summarize(const unsigned int step, const NewtonResult &result)
+  Problem<dim>::summarize(const LoadStep &step, const NewtonResult &result)
   {
     TimerOutput::Scope scope(timer, "postprocessing");
     StepSummary<dim>   s;
-    s.step              = step;
+    s.step              = step.step;
     s.load_factor       = load_factor;
+    s.load_increment    = step.increment;
+    s.cut_backs         = step.cut_backs;
     s.newton_iterations = result.iterations();
     s.linear_iterations = result.linear_iterations();
+    s.backtracks        = result.backtracks();
+    s.newton_history    = result.history;
     s.residual          = result.history.back().residual;
     s.energy            = elasticity->total_energy(u_ghosted, load_factor);
+    s.min_J             = converged_min_J;
 
     // residual = f_int - f_ext at the converged state: on supported dofs it
     // is the force the support exerts on the body.
@@ -268,14 +394,14 @@ namespace hyperelastic
         s.deformed_max[d] = Utilities::MPI::max(s.deformed_max[d], comm);
       }
 
-    // min J always (cheap); the fields only if they are written.
-    const CellFields fields = elasticity->cell_fields(u_ghosted, s.min_J);
     scope.stop();
     if (parameters.output.write_vtu)
       {
         TimerOutput::Scope output_scope(timer, "output");
+        double             min_J;
+        const CellFields   fields = elasticity->cell_fields(u_ghosted, min_J);
         writer->write_fields(
-          step, load_factor, dof_handler, mapping, u_ghosted, fields);
+          step.step, load_factor, dof_handler, mapping, u_ghosted, fields);
       }
     return s;
   }
@@ -294,10 +420,23 @@ namespace hyperelastic
         timer.disable_output();
         throw;
       }
-    catch (const ConvergenceFailure &)
+    catch (const ConvergenceFailure &failure)
       {
         timer.disable_output();
-        throw;
+        if (!writer)
+          throw;
+        // Every converged step has been written: say where the last one is.
+        std::ostringstream where;
+        where << failure.what() << "\nlast converged state (t = "
+              << (step_summaries.empty() ? 0.
+                                         : step_summaries.back().load_factor)
+              << "): ";
+        if (parameters.output.write_vtu)
+          where << writer->pvtu_file(step_summaries.size()) << " (series "
+                << parameters.output.directory << "/"
+                << parameters.output.base_name << ".pvd), ";
+        where << "summary " << writer->csv_file();
+        throw ConvergenceFailure(where.str());
       }
   }
 
@@ -313,22 +452,25 @@ namespace hyperelastic
         writer->write_fields(0, 0., dof_handler, mapping, u_ghosted, fields);
       }
 
-    const unsigned int n_steps = parameters.loading.n_load_steps;
-    for (unsigned int step = 1; step <= n_steps; ++step)
-      {
-        load_factor = double(step) / n_steps;
-        pcout << "\nLoad step " << step << " of " << n_steps
-              << ", load factor t = " << load_factor << std::endl;
-        const NewtonResult     result  = newton.solve(*this);
-        const StepSummary<dim> summary = summarize(step, result);
-        writer->write_summary(summary);
-        step_summaries.push_back(summary);
-        pcout << "   converged in " << result.iterations()
-              << " Newton iterations (" << result.linear_iterations()
-              << " linear); energy " << std::setprecision(10) << summary.energy
-              << ", min J " << summary.min_J << std::setprecision(6)
-              << std::endl;
-      }
+    const LoadStepper stepper(parameters.load_stepping,
+                              parameters.loading.n_load_steps,
+                              pcout);
+    stepper.run(newton,
+                *this,
+                [&](const LoadStep &step, const NewtonResult &result) {
+                  const StepSummary<dim> summary = summarize(step, result);
+                  writer->write_summary(summary);
+                  step_summaries.push_back(summary);
+                  pcout << "   converged in " << result.iterations()
+                        << " Newton iterations (" << result.linear_iterations()
+                        << " linear";
+                  if (summary.backtracks > 0)
+                    pcout << ", " << summary.backtracks
+                          << " line-search backtracks";
+                  pcout << "); energy " << std::setprecision(10)
+                        << summary.energy << ", min J " << summary.min_J
+                        << std::setprecision(6) << std::endl;
+                });
     pcout << "\nSummary per load step: " << writer->csv_file();
     if (parameters.output.write_vtu)
       pcout << "; fields for ParaView: " << parameters.output.directory << "/"

@@ -50,6 +50,40 @@ namespace hyperelastic::testing
           10.);
         return {l2, mu * (l1 - 1. / l1) + lambda * std::log(J(l2)) / l1};
       }
+    if (model == "stable neo-Hookean")
+      {
+        // Model constants matching (mu, lambda) at small strain, and alpha.
+        const double mu_s     = 4. / 3. * mu;
+        const double lambda_s = lambda + 5. / 6. * mu;
+        const double alpha    = 1. + 0.75 * mu_s / lambda_s;
+        // I_C counts F33 = 1 in plane strain.
+        const auto I_C = [&](double l2) {
+          return l1 * l1 + l2 * l2 + (dim == 3 ? l2 * l2 : 1.);
+        };
+        const auto J = [&](double l2) { return l1 * std::pow(l2, dim - 1); };
+        // P = mu_s (1 - 1/(I_C + 1)) F + lambda_s (J - alpha) cof F with
+        // cof F = diag(l2^2, l1 l2, l1 l2) (3D) or diag(l2, l1) (2D).
+        const auto shear = [&](double l2) {
+          return mu_s * (1. - 1. / (I_C(l2) + 1.));
+        };
+        // P22 = 0. In 3D P22 = l2 g(l2) with g = shear + lambda_s (J - alpha)
+        // l1; in 2D g = P22 = shear l2 + lambda_s (J - alpha) l1. Both g are
+        // increasing in l2 > 0 (shear, shear l2 and J are), negative at
+        // l2 -> 0 (there shear l2 -> 0, and in 3D shear -> mu_s l1^2 / (l1^2
+        // + 1) <= mu_s l1 / 2 < 3/4 mu_s l1 <= lambda_s alpha l1) and grow
+        // without bound, so there is exactly one root; the upper end of the
+        // bracket is doubled until g changes sign.
+        const auto g = [&](double l2) {
+          return (dim == 3 ? shear(l2) : shear(l2) * l2) +
+                 lambda_s * (J(l2) - alpha) * l1;
+        };
+        double upper = 10.;
+        while (!(g(upper) > 0.) && upper < 1e6)
+          upper *= 2.;
+        const double l2  = bisect(g, 1e-6, upper);
+        const double cof = dim == 3 ? l2 * l2 : l2;
+        return {l2, shear(l2) * l1 + lambda_s * (J(l2) - alpha) * cof};
+      }
     if (model == "St. Venant-Kirchhoff")
       {
         const double E11 = 0.5 * (l1 * l1 - 1.);

@@ -8,7 +8,12 @@
 //   3. objectivity: psi(QF) = psi(F), P(QF) = Q P(F), A(QF) = Q A(F) Q^T;
 //   4. rotation-variant polar decomposition, including det F < 0;
 //   5. behaviour at J <= 0 (neo-Hookean +infinity, the others finite);
-//   6. small-strain limit: P(I + eps G) / eps -> C : G.
+//   6. small-strain limit: P(I + eps G) / eps -> C : G;
+//   7. stable neo-Hookean only: finite at F = 0, rank-one and flat F and far
+//      into inversion, consistent with finite differences at J = 0, a lower
+//      bound psi >= lambda'/2 (J - 1)^2 - 0.807 mu' (so psi -> infinity as
+//      J -> -infinity), the mirror identity psi(F) - psi(F M), and plane
+//      strain equal to the 3D model at diag(F, 1).
 // Every model named by material_model_names() is tested in 2D and 3D. One table
 // row per (model, dim, check) shows the worst error over all samples of that
 // row; the program ends with "N passed, M failed" and fails if M > 0.
@@ -426,12 +431,13 @@ namespace
   template <int dim>
   Tensor<2, dim>
   gradient_by_differences(const Material<dim>  &material,
-                          const Tensor<2, dim> &F)
+                          const Tensor<2, dim> &F,
+                          const double          step = 0.)
   {
     const auto psi = [&](const Tensor<2, dim> &G) {
       return material.energy_density(G);
     };
-    const double   h = difference_step(F);
+    const double   h = step > 0. ? step : difference_step(F);
     Tensor<2, dim> P;
     for (unsigned int k = 0; k < dim; ++k)
       for (unsigned int L = 0; L < dim; ++L)
@@ -442,9 +448,11 @@ namespace
   /// dT/dF_kL stored as D[i][J][k][L] for a tensor-valued function T(F).
   template <int dim, typename Function>
   Tensor<4, dim>
-  jacobian_by_differences(const Function &T, const Tensor<2, dim> &F)
+  jacobian_by_differences(const Function       &T,
+                          const Tensor<2, dim> &F,
+                          const double          step = 0.)
   {
-    const double   h = difference_step(F);
+    const double   h = step > 0. ? step : difference_step(F);
     Tensor<4, dim> D;
     for (unsigned int k = 0; k < dim; ++k)
       for (unsigned int L = 0; L < dim; ++L)
@@ -475,14 +483,17 @@ namespace
     LameParameters lame;
   };
 
-  /// Rest-state parameter sets: mu = lambda, lambda-dominated, and one made
-  /// through the (E, nu) conversion that scenes use.
+  /// Rest-state parameter sets: mu = lambda, lambda-dominated, one made
+  /// through the (E, nu) conversion that scenes use, and a negative lambda
+  /// near the bulk-modulus bound lambda > -2/3 mu (where stable neo-Hookean's
+  /// lambda' = lambda + 5/6 mu is smallest, here about 0.2 mu).
   std::vector<NamedParameters>
   rest_state_parameters()
   {
     return {{"mu=1 lambda=1", lame_parameters(1., 1.)},
             {"mu=0.3 lambda=2.7", lame_parameters(0.3, 2.7)},
-            {"E=2.5 nu=0.3", LameParameters::from_young_poisson(2.5, 0.3)}};
+            {"E=2.5 nu=0.3", LameParameters::from_young_poisson(2.5, 0.3)},
+            {"mu=1 lambda=-0.63", lame_parameters(1., -0.63)}};
   }
 
   /// For the randomised checks: mu != lambda so that swapped roles would show.
@@ -626,22 +637,22 @@ namespace
           }
         report.below(name,
                      dim,
-                     "|psi(I)| / (mu+lambda)  [3 Lame sets]",
+                     "|psi(I)| / (mu+lambda)  [4 Lame sets]",
                      psi_error.value,
                      1e-12);
         report.below(name,
                      dim,
-                     "|P(I)| / (mu+lambda)  [3 Lame sets]",
+                     "|P(I)| / (mu+lambda)  [4 Lame sets]",
                      P_error.value,
                      1e-12);
         report.below(name,
                      dim,
-                     "|dP/dF(I) - C| / |C|  [3 Lame sets]",
+                     "|dP/dF(I) - C| / |C|  [4 Lame sets]",
                      A_error.value,
                      1e-12);
         report.below(name,
                      dim,
-                     "stress_and_tangent(I) = (0, C)  [3 Lame sets]",
+                     "stress_and_tangent(I) = (0, C)  [4 Lame sets]",
                      combined_error.value,
                      1e-12);
       }
@@ -1108,6 +1119,234 @@ namespace
       }
   }
 
+  // --------------------------------------- 7. stable neo-Hookean at J <= 0
+
+  const std::string stable_neo_hookean = "stable neo-Hookean";
+
+  /// F with one singular value set to 0 (J = 0), from a random F.
+  template <int dim>
+  Tensor<2, dim>
+  flattened(RandomTensors &random)
+  {
+    Tensor<2, dim> D = identity<dim>();
+    for (unsigned int a = 0; a < dim; ++a)
+      D[a][a] = random.log_uniform(0.3, 3.);
+    D[dim - 1][dim - 1] = 0.;
+    return random.rotation<dim>() * D * random.rotation<dim>();
+  }
+
+  /// The model is defined for every F, so beyond checks 2 and 5 it is
+  /// checked where the others are not: on flat elements (J = 0, including
+  /// F = 0 and rank-one F, where the step of check 2 would vanish), far into
+  /// inversion, and against the lower bound that makes inversion cost energy.
+  template <int dim>
+  void
+  check_stable_neo_hookean(Report &report)
+  {
+    const LameParameters lame = test_parameters();
+    const auto    material    = create_material<dim>(stable_neo_hookean, lame);
+    const double  mu_s        = 4. / 3. * lame.mu;
+    const double  lambda_s    = lame.lambda + 5. / 6. * lame.mu;
+    RandomTensors random(600 + dim);
+
+    // Finite everywhere: F = 0, rank one, flat, mirror, and J down to -1e4.
+    std::vector<Tensor<2, dim>> samples = {Tensor<2, dim>(),
+                                           diagonal_with_last<dim>(0.),
+                                           diagonal_with_last<dim>(-1.)};
+    {
+      const Tensor<1, dim> a = random.general<dim>()[0];
+      const Tensor<1, dim> b = random.general<dim>()[0];
+      Tensor<2, dim>       rank_one;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          rank_one[i][j] = a[i] * b[j];
+      samples.push_back(rank_one);
+    }
+    for (unsigned int s = 0; s < n_samples; ++s)
+      {
+        samples.push_back(flattened<dim>(random));
+        samples.push_back(
+          random.deformation<dim>(-random.log_uniform(0.2, 1e4)));
+      }
+    Worst not_finite;
+    for (const Tensor<2, dim> &F : samples)
+      {
+        Tensor<2, dim> P;
+        Tensor<4, dim> A;
+        material->stress_and_tangent(F, P, A);
+        not_finite.update((std::isfinite(material->energy_density(F)) &&
+                           all_finite(material->first_piola_kirchhoff(F)) &&
+                           all_finite(material->stress_tangent(F)) &&
+                           all_finite(P) && all_finite(A))
+                            ? 0.
+                            : 1.,
+                          F);
+      }
+    report.record(stable_neo_hookean,
+                  dim,
+                  "psi, P, dP/dF finite: F=0, rank 1, J=0, J to -1e4 (#bad)",
+                  not_finite.value,
+                  "= 0",
+                  not_finite.value == 0.,
+                  not_finite.worst_case);
+
+    // Consistency at J = 0 with a fixed step (the energy is smooth there).
+    Worst      P_error, A_error;
+    const auto P_of = [&](const Tensor<2, dim> &G) {
+      return material->first_piola_kirchhoff(G);
+    };
+    for (unsigned int s = 0; s < n_samples; ++s)
+      {
+        const Tensor<2, dim> F = flattened<dim>(random);
+        const Tensor<2, dim> P = material->first_piola_kirchhoff(F);
+        const Tensor<4, dim> A = material->stress_tangent(F);
+        P_error.update(
+          (P - gradient_by_differences(*material, F, 1e-3)).norm() / P.norm(),
+          F);
+        A_error.update((A - jacobian_by_differences(P_of, F, 1e-3)).norm() /
+                         A.norm(),
+                       F);
+      }
+    report.below(stable_neo_hookean,
+                 dim,
+                 "P vs FD of psi, J = 0 (flat F)",
+                 P_error.value,
+                 1e-6,
+                 P_error.worst_case);
+    report.below(stable_neo_hookean,
+                 dim,
+                 "dP/dF vs FD of P, J = 0 (flat F)",
+                 A_error.value,
+                 1e-6,
+                 A_error.worst_case);
+
+    // Inversion costs energy. The shear part mu'/2 (d - ln(1 + d/4)),
+    // d = I_C - 3 >= -3, is at least -(3 - ln 4)/2 mu', and for J <= 1 the
+    // volumetric part (J - 1)(lambda'/2 (J - 1) - 3/4 mu') is at least
+    // lambda'/2 (J - 1)^2, so psi >= lambda'/2 (J - 1)^2 - (3 - ln 4)/2 mu'.
+    // Measured: the smallest psi - bound, scaled by mu' (must be >= 0).
+    Worst slack(false);
+    for (const Tensor<2, dim> &F : samples)
+      {
+        const double J     = determinant(F);
+        const double bound = 0.5 * lambda_s * (J - 1.) * (J - 1.) -
+                             0.5 * (3. - std::log(4.)) * mu_s;
+        slack.update((material->energy_density(F) - bound) / mu_s, F);
+      }
+    report.record(stable_neo_hookean,
+                  dim,
+                  "min (psi - lambda'/2 (J-1)^2 + 0.807 mu') / mu', J <= 0",
+                  slack.value,
+                  ">= 0",
+                  slack.value >= 0.,
+                  slack.worst_case);
+
+    // ... so the energy grows without bound as J -> -infinity: along
+    // F = diag(1, .., 1, -s) it increases with s, faster than linearly
+    // (psi ~ (mu' + lambda')/2 s^2: ratios tend to 100; about 31 for the
+    // first step s = 1 -> 10 with the test parameters).
+    double previous = 0., growth = infinity;
+    bool   increasing = true;
+    for (const double s : {1., 10., 100., 1e3, 1e4})
+      {
+        const double psi =
+          material->energy_density(diagonal_with_last<dim>(-s));
+        increasing = increasing && psi > previous;
+        if (s > 1.)
+          growth = std::min(growth, psi / previous);
+        previous = psi;
+      }
+    report.record(stable_neo_hookean,
+                  dim,
+                  "psi(diag(1,..,-s)) increasing, s = 1 .. 1e4",
+                  increasing ? 1. : 0.,
+                  "= 1",
+                  increasing);
+    report.above(stable_neo_hookean,
+                 dim,
+                 "min psi(diag(..,-10 s)) / psi(diag(..,-s)), s >= 1",
+                 growth,
+                 20.);
+    report.above(stable_neo_hookean,
+                 dim,
+                 "psi(diag(1,..,1,-1e4)) / (mu + lambda)",
+                 previous / (lame.mu + lame.lambda),
+                 1e7);
+
+    // An inverted element costs more than its mirror image: reflecting F
+    // flips the sign of J and keeps I_C, so psi(F) - psi(F M) =
+    // lambda'/2 ((J - alpha)^2 - (J + alpha)^2) = -2 (lambda' + 3/4 mu') J.
+    const Tensor<2, dim> M = diagonal_with_last<dim>(-1.);
+    Worst                mirror_error;
+    for (unsigned int s = 0; s < n_samples; ++s)
+      {
+        const Tensor<2, dim> F =
+          random.deformation<dim>(sample_determinant(random, s, -1.));
+        const double expected = -2. * (lambda_s + 0.75 * mu_s) * determinant(F);
+        mirror_error.update(std::abs(material->energy_density(F) -
+                                     material->energy_density(F * M) -
+                                     expected) /
+                              expected,
+                            F);
+      }
+    report.below(stable_neo_hookean,
+                 dim,
+                 "psi(F) - psi(F M) = -2 (lambda' + 3/4 mu') J, J < 0",
+                 mirror_error.value,
+                 1e-12,
+                 mirror_error.worst_case);
+  }
+
+  /// Plane strain is the 3D model at diag(F, 1): psi equal, and the in-plane
+  /// blocks of P and dP/dF equal, for J > 0, J < 0 and J = 0.
+  void
+  check_stable_neo_hookean_plane_strain(Report &report)
+  {
+    const LameParameters lame    = test_parameters();
+    const auto           planar  = create_material<2>(stable_neo_hookean, lame);
+    const auto           spatial = create_material<3>(stable_neo_hookean, lame);
+    RandomTensors        random(700);
+    Worst                error;
+    for (unsigned int s = 0; s < 3 * n_samples; ++s)
+      {
+        const Tensor<2, 2> F =
+          s % 3 == 2 ? flattened<2>(random)
+                     : random.deformation<2>(
+                         sample_determinant(random, s, s % 3 == 0 ? 1. : -1.));
+        Tensor<2, 3> F3;
+        F3[2][2] = 1.;
+        for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int j = 0; j < 2; ++j)
+            F3[i][j] = F[i][j];
+        const double psi  = planar->energy_density(F);
+        const double psi3 = spatial->energy_density(F3);
+        Tensor<2, 2> P, P3_block;
+        Tensor<4, 2> A, A3_block;
+        planar->stress_and_tangent(F, P, A);
+        Tensor<2, 3> P3;
+        Tensor<4, 3> A3;
+        spatial->stress_and_tangent(F3, P3, A3);
+        for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int J = 0; J < 2; ++J)
+            {
+              P3_block[i][J] = P3[i][J];
+              for (unsigned int k = 0; k < 2; ++k)
+                for (unsigned int L = 0; L < 2; ++L)
+                  A3_block[i][J][k][L] = A3[i][J][k][L];
+            }
+        error.update(std::max({std::abs(psi - psi3) / std::abs(psi3),
+                               (P - P3_block).norm() / P3.norm(),
+                               (A - A3_block).norm() / A3.norm()}),
+                     F);
+      }
+    report.below(stable_neo_hookean,
+                 2,
+                 "plane strain = 3D at diag(F, 1): psi, P, dP/dF",
+                 error.value,
+                 1e-13,
+                 error.worst_case);
+  }
+
   template <int dim>
   void
   run_all(Report &report, const std::vector<std::string> &models)
@@ -1133,6 +1372,13 @@ namespace
     check_inverted_elements<dim>(report, models);
     report.section(std::to_string(dim) + "D  6. small-strain limit");
     check_small_strain<dim>(report, models);
+    if (std::find(models.begin(), models.end(), stable_neo_hookean) !=
+        models.end())
+      {
+        report.section(std::to_string(dim) +
+                       "D  7. stable neo-Hookean: J <= 0 and energy growth");
+        check_stable_neo_hookean<dim>(report);
+      }
   }
 } // namespace
 
@@ -1148,6 +1394,8 @@ main()
       check_lame_conversion(report);
       run_all<2>(report, models);
       run_all<3>(report, models);
+      report.section("7. stable neo-Hookean: plane strain = 3D at diag(F, 1)");
+      check_stable_neo_hookean_plane_strain(report);
       return report.finish();
     }
   catch (const std::exception &exception)

@@ -35,6 +35,16 @@ namespace hyperelastic
     std::array<dealii::Vector<double>, 6> cauchy;
   };
 
+  /// The total potential energy of a state and its smallest J.
+  struct EnergyEvaluation
+  {
+    double energy = 0.;
+    /// Round-off level of the energy (from the sizes of the summed terms):
+    /// energy differences below it are not meaningful.
+    double noise = 0.;
+    double min_J = 0.;
+  };
+
   template <int dim>
   class ElasticityOperator
   {
@@ -46,7 +56,9 @@ namespace hyperelastic
 
     /// Internal forces f_int(u) and external forces f_ext(t), unconstrained
     /// (both compressed, owned entries only). u must have ghost entries.
-    void
+    /// Returns an estimate of the round-off level of the l2 norm of f_int:
+    /// residuals below it cannot be resolved.
+    double
     assemble_forces(const VectorType &u,
                     const double      t,
                     VectorType       &internal,
@@ -54,16 +66,28 @@ namespace hyperelastic
 
     /// Tangent K = d f_int / du and right-hand side -(f_int - f_ext),
     /// condensed with @p constraints (whose inhomogeneities are imposed).
+    /// With @p project_tangent, dP/dF at every quadrature point is projected
+    /// to positive semi-definite first (projected Newton), so K is too.
     void
     assemble_system(const VectorType                        &u,
                     const double                             t,
                     const dealii::AffineConstraints<double> &constraints,
                     MatrixType                              &matrix,
-                    VectorType                              &rhs) const;
+                    VectorType                              &rhs,
+                    bool project_tangent = false) const;
 
-    /// Total potential energy: stored energy minus the work of the loads.
+    /// Total potential energy (stored energy minus the work of the loads)
+    /// if @p with_energy, and the smallest J at the quadrature points
+    /// (collective). +infinity where the model is undefined.
+    EnergyEvaluation
+    evaluate(const VectorType &u, const double t, bool with_energy) const;
+
+    /// Total potential energy alone (collective).
     double
-    total_energy(const VectorType &u, const double t) const;
+    total_energy(const VectorType &u, const double t) const
+    {
+      return evaluate(u, t, true).energy;
+    }
 
     /// J, energy density and Cauchy stress per locally owned cell; also the
     /// smallest J over the whole mesh (collective).

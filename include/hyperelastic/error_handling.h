@@ -44,6 +44,13 @@ namespace hyperelastic
                            const std::string &message,
                            const MPI_Comm     comm);
 
+  /// If @p local_error is non-empty on any rank, throws ConvergenceFailure on
+  /// every rank with the message of the lowest such rank (naming it).
+  /// Collective over @p comm.
+  void
+  throw_convergence_failure_if_any(const std::string &local_error,
+                                   const MPI_Comm     comm);
+
   /// Runs @p body and turns exceptions into messages and exit codes as
   /// described above. Returns the exit code.
   int

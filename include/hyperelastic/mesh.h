@@ -15,7 +15,11 @@ namespace hyperelastic
 {
   /// Builds @p tria from the scene's mesh section and returns the boundary ids
   /// the whole mesh has. Collective; throws InputError for unreadable or
-  /// unsuitable meshes.
+  /// unsuitable meshes, among them meshes with cells of zero area or volume,
+  /// with inverted cells (orientation opposite to the rest of the mesh; a
+  /// mesh whose cells are all negatively oriented is accepted) and 2D meshes
+  /// whose nodes do not lie in a plane z = const. The messages list the
+  /// offending cells by their gmsh element numbers.
   template <int dim>
   std::set<dealii::types::boundary_id>
   create_mesh(const MeshParameters &parameters,

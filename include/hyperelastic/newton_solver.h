@@ -1,11 +1,14 @@
-// Newton's method for a nonlinear system it knows only through the
-// NonlinearSystem interface: nothing here is specific to elasticity.
+// Newton's method with an energy-based backtracking line search, for a
+// nonlinear system it knows only through the NonlinearSystem interface:
+// nothing here is specific to elasticity.
 #pragma once
 
 #include <deal.II/base/conditional_ostream.h>
 
 #include <hyperelastic/parameters.h>
 
+#include <limits>
+#include <string>
 #include <vector>
 
 namespace hyperelastic
@@ -17,27 +20,68 @@ namespace hyperelastic
     /// Size of the forces of the run so far, for the relative test (a
     /// running maximum, so that it does not vanish when loads are removed).
     double scale;
+    /// Round-off level of the residual (stiff materials: lambda ln J
+    /// computed near J = 1): residuals below it count as zero.
+    double noise = 0.;
   };
 
-  /// What Newton needs from a problem.
+  /// What is known of a trial iterate u + alpha du.
+  struct TrialPoint
+  {
+    /// False if the iterate is outside the model's domain (an element with
+    /// J <= 0 for a model undefined there) or its energy is not finite.
+    bool admissible = true;
+    /// Total potential energy (NaN if it was not asked for).
+    double energy = std::numeric_limits<double>::quiet_NaN();
+    /// Round-off level of the energy: differences below it are noise.
+    double energy_noise = 0.;
+    /// Smallest J of the iterate (NaN if it was not computed).
+    double min_J = std::numeric_limits<double>::quiet_NaN();
+  };
+
+  /// What Newton needs from a problem. Every call is collective: all ranks
+  /// make the same calls and get the same answers.
   class NonlinearSystem
   {
   public:
     virtual ~NonlinearSystem() = default;
 
     /// Linearize at the current iterate. With @p impose_constraint_increment
-    /// the next update must also move the constrained unknowns to their new
-    /// prescribed values (the first iteration of a load step).
-    virtual void
-    assemble_linearization(bool impose_constraint_increment) = 0;
+    /// the next update must also move the constrained unknowns from their
+    /// current to their prescribed values. Returns whether that increment is
+    /// non-zero anywhere (false without @p impose_constraint_increment).
+    /// With @p positive_semidefinite the tangent is made positive
+    /// semi-definite (projected Newton), so that the direction descends.
+    virtual bool
+    assemble_linearization(bool impose_constraint_increment,
+                           bool positive_semidefinite) = 0;
 
-    /// Solve the linearized system for the update; returns Krylov iterations.
+    /// Solve the linearized system for the direction du; returns Krylov
+    /// iterations.
     virtual unsigned int
     solve_linearization() = 0;
 
-    /// Add the update to the iterate; returns the update's norm.
+    /// Derivative of the energy at the current iterate along du (negative for
+    /// a descent direction). Valid when du leaves the constraints unchanged.
     virtual double
-    apply_update() = 0;
+    directional_derivative() const = 0;
+
+    /// What evaluate_trial() must find out about a trial iterate.
+    enum class TrialCheck
+    {
+      none,          ///< nothing: plain Newton
+      admissibility, ///< whether it lies in the model's domain
+      energy         ///< that, and its energy
+    };
+
+    /// Evaluate u + alpha du.
+    virtual TrialPoint
+    evaluate_trial(double alpha, TrialCheck check) = 0;
+
+    /// Make the last evaluated trial the current iterate; returns the norm of
+    /// the step taken (alpha |du|).
+    virtual double
+    accept_trial() = 0;
 
     virtual ResidualNorms
     residual_norms() = 0;
@@ -46,15 +90,31 @@ namespace hyperelastic
     /// for the relative update test.
     virtual double
     solution_scale() const = 0;
+
+    /// Called once Newton's tests pass; throws ConvergenceFailure if the
+    /// converged state is not acceptable (for example inverted elements).
+    virtual void
+    verify_converged_state() = 0;
   };
 
   /// One row of the Newton table.
   struct NewtonIteration
   {
-    unsigned int iteration;
-    double       residual;
-    double       update;
-    unsigned int linear_iterations;
+    unsigned int iteration         = 0;
+    double       residual          = 0.;
+    double       update            = 0.; ///< norm of the step taken
+    double       step_length       = 1.; ///< alpha of the line search
+    unsigned int backtracks        = 0;  ///< trials rejected before it
+    unsigned int linear_iterations = 0;
+    bool         projected         = false; ///< tangent made semi-definite
+    /// Whether the energy had to decrease (sufficient decrease) in this
+    /// iteration's line search; false while prescribed displacements are
+    /// still being imposed or without a line search.
+    bool   energy_tested = false;
+    double energy_before = std::numeric_limits<double>::quiet_NaN();
+    double energy        = std::numeric_limits<double>::quiet_NaN();
+    double energy_noise  = 0.;
+    double min_J         = std::numeric_limits<double>::quiet_NaN();
   };
 
   struct NewtonResult
@@ -67,6 +127,8 @@ namespace hyperelastic
     }
     unsigned int
     linear_iterations() const;
+    unsigned int
+    backtracks() const;
   };
 
   class NewtonSolver
@@ -76,12 +138,29 @@ namespace hyperelastic
                  dealii::ConditionalOStream pcout,
                  bool                       verbose);
 
-    /// Iterate until converged; throws ConvergenceFailure with the residual
-    /// history otherwise (NaN, or the iteration limit).
+    /// Iterate until converged; throws ConvergenceFailure with the reason and
+    /// the residual history otherwise (iteration limit, line-search failure,
+    /// NaN; the system's own failures, such as a Krylov failure, pass
+    /// through).
     NewtonResult
     solve(NonlinearSystem &system) const;
 
+    /// The Newton table of @p result as text.
+    static std::string
+    table(const NewtonResult &result);
+
   private:
+    /// Backtracks from alpha = 1 until the trial is admissible and, if
+    /// @p test_energy, satisfies the sufficient-decrease condition.
+    /// Returns false (and the reason) if no step length down to the minimum
+    /// is acceptable.
+    bool
+    line_search(NonlinearSystem  &system,
+                bool              test_energy,
+                const TrialPoint &current,
+                NewtonIteration  &row,
+                std::string      &failure) const;
+
     const NewtonParameters     parameters;
     dealii::ConditionalOStream pcout;
     const bool                 verbose;

@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <hyperelastic/elasticity_operator.h>
+#include <hyperelastic/newton_solver.h>
 #include <hyperelastic/parameters.h>
 
 #include <fstream>
@@ -25,11 +26,15 @@ namespace hyperelastic
   {
     unsigned int step              = 0;
     double       load_factor       = 0.;
+    double       load_increment    = 0.;
+    unsigned int cut_backs         = 0; ///< failed attempts before this step
     unsigned int newton_iterations = 0;
     unsigned int linear_iterations = 0;
-    double       residual          = 0.;
-    double       energy            = 0.;
-    double       min_J             = 0.;
+    unsigned int backtracks        = 0; ///< rejected line-search trials
+    std::vector<NewtonIteration> newton_history;
+    double                       residual = 0.;
+    double                       energy   = 0.;
+    double                       min_J    = 0.;
     /// Force the supports exert on the body, per Dirichlet boundary id: the
     /// sum of f_int - f_ext over the dofs on that boundary, for the
     /// components the condition prescribes (the others are reported as 0).
@@ -62,6 +67,10 @@ namespace hyperelastic
 
     std::string
     csv_file() const;
+
+    /// The .pvtu file of output step @p step.
+    std::string
+    pvtu_file(unsigned int step) const;
 
   private:
     const OutputParameters                      parameters;

@@ -93,12 +93,36 @@ namespace hyperelastic
     parse(ParameterHandler &prm);
   };
 
+  /// Which tangent Newton uses.
+  enum class NewtonTangent
+  {
+    exact,               ///< full Newton
+    projected,           ///< dP/dF projected to semi-definite everywhere
+    exact_then_projected ///< full Newton; projected where its step fails
+  };
+
   struct NewtonParameters
   {
-    unsigned int max_iterations              = 20;
-    double       absolute_residual_tolerance = 0.;
-    double       relative_residual_tolerance = 1e-10;
-    double       update_tolerance            = 1e-8;
+    unsigned int  max_iterations              = 20;
+    double        absolute_residual_tolerance = 0.;
+    double        relative_residual_tolerance = 1e-10;
+    double        update_tolerance            = 1e-8;
+    bool          line_search                 = true;
+    double        armijo_constant             = 1e-4;
+    double        minimum_step_length         = 1e-4;
+    NewtonTangent tangent = NewtonTangent::exact_then_projected;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
+  };
+
+  struct LoadSteppingParameters
+  {
+    bool         adaptive             = true;
+    double       minimum_increment    = 1e-4;
+    unsigned int easy_step_iterations = 6;
 
     static void
     declare(ParameterHandler &prm);
@@ -148,6 +172,7 @@ namespace hyperelastic
     MaterialParameters     material;
     LoadingParameters      loading;
     NewtonParameters       newton;
+    LoadSteppingParameters load_stepping;
     LinearSolverParameters linear_solver;
     OutputParameters       output;
 

@@ -1,6 +1,7 @@
 // A scene run end to end: mesh, dofs, material and loads from the parameters,
 // then for each load step a Newton solve, post-processing and output. This
-// class is the NonlinearSystem that the Newton solver drives.
+// class is the SteppedSystem that the Newton solver and the load stepper
+// drive.
 #pragma once
 
 #include <deal.II/base/conditional_ostream.h>
@@ -14,6 +15,7 @@
 #include <hyperelastic/boundary_conditions.h>
 #include <hyperelastic/elasticity_operator.h>
 #include <hyperelastic/linear_solver.h>
+#include <hyperelastic/load_stepping.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/newton_solver.h>
 #include <hyperelastic/output.h>
@@ -25,7 +27,7 @@
 namespace hyperelastic
 {
   template <int dim>
-  class Problem : public NonlinearSystem
+  class Problem : public SteppedSystem
   {
   public:
     /// @p print: whether rank 0 prints progress (tests may switch it off).
@@ -56,24 +58,41 @@ namespace hyperelastic
     }
 
     // NonlinearSystem
-    void
-    assemble_linearization(bool impose_constraint_increment) override;
+    bool
+    assemble_linearization(bool impose_constraint_increment,
+                           bool positive_semidefinite) override;
     unsigned int
     solve_linearization() override;
     double
-    apply_update() override;
+    directional_derivative() const override;
+    TrialPoint
+    evaluate_trial(double alpha, TrialCheck check) override;
+    double
+    accept_trial() override;
     ResidualNorms
     residual_norms() override;
     double
     solution_scale() const override;
+    void
+    verify_converged_state() override;
+
+    // SteppedSystem
+    void
+    set_load_factor(double t) override;
+    void
+    store_converged_state() override;
+    void
+    restore_converged_state() override;
 
   private:
     void
     solve_all_load_steps();
     void
     setup();
+    void
+    warn_about_volumetric_locking() const;
     StepSummary<dim>
-    summarize(unsigned int step, const NewtonResult &newton_result);
+    summarize(const LoadStep &step, const NewtonResult &newton_result);
     void
     write_fields(unsigned int step);
 
@@ -112,12 +131,26 @@ namespace hyperelastic
       reaction_dofs;
 
     MatrixType tangent;
-    VectorType u, u_ghosted, update, rhs;
+    /// u: the current iterate; update: Newton's direction; trial: the
+    /// line search's candidate u + alpha update; u_ghosted: whichever of u
+    /// and trial was evaluated last, with ghost entries.
+    VectorType u, u_ghosted, update, trial, rhs;
     VectorType internal_force, external_force, residual;
     double     load_factor = 0.;
+    double     step_length = 1.; ///< of the last evaluated trial
     /// Running maxima of the force and displacement norms (Newton's scales).
     double force_scale   = 0.;
     double solution_size = 0.;
+    /// Smallest J of the last converged state.
+    double converged_min_J = 1.;
+
+    /// The last converged state, to return to after a failed load step.
+    struct ConvergedState
+    {
+      VectorType u;
+      double     force_scale   = 0.;
+      double     solution_size = 0.;
+    } converged;
 
     std::vector<StepSummary<dim>> step_summaries;
   };

@@ -6,6 +6,7 @@
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/materials/neo_hookean.h>
 #include <hyperelastic/materials/st_venant_kirchhoff.h>
+#include <hyperelastic/materials/stable_neo_hookean.h>
 
 namespace hyperelastic
 {
@@ -33,7 +34,8 @@ namespace hyperelastic
   std::string
   material_model_names()
   {
-    return "linear elastic|St. Venant-Kirchhoff|corotational|neo-Hookean";
+    return "linear elastic|St. Venant-Kirchhoff|corotational|neo-Hookean|"
+           "stable neo-Hookean";
   }
 
   template <int dim>
@@ -48,6 +50,8 @@ namespace hyperelastic
       return std::make_unique<Corotational<dim>>(lame);
     if (name == "neo-Hookean")
       return std::make_unique<NeoHookean<dim>>(lame);
+    if (name == "stable neo-Hookean")
+      return std::make_unique<StableNeoHookean<dim>>(lame);
     AssertThrow(false,
                 dealii::ExcMessage(
                   "Unknown material model '" + name +

@@ -1,0 +1,108 @@
+// Load-step control with cut-back on failure and growth after easy steps.
+#include <hyperelastic/error_handling.h>
+#include <hyperelastic/load_stepping.h>
+
+#include <algorithm>
+#include <sstream>
+
+namespace hyperelastic
+{
+  LoadStepper::LoadStepper(const LoadSteppingParameters &parameters,
+                           const unsigned int            n_nominal_steps,
+                           dealii::ConditionalOStream    pcout)
+      : parameters(parameters)
+      , n_nominal_steps(n_nominal_steps)
+      , pcout(pcout)
+  {
+  }
+
+  namespace
+  {
+    /// The first line of a failure message (the reason without the table).
+    std::string
+    first_line(const std::string &text)
+    {
+      return text.substr(0, text.find('\n'));
+    }
+  } // namespace
+
+  void
+  LoadStepper::run(
+    const NewtonSolver &newton,
+    SteppedSystem      &system,
+    const std::function<void(const LoadStep &, const NewtonResult &)>
+      &on_converged) const
+  {
+    const double nominal   = 1. / n_nominal_steps;
+    double       t         = 0.;
+    double       increment = nominal;
+    LoadStep     step;
+    unsigned int easy_steps_in_a_row = 0;
+    system.store_converged_state();
+    while (t < 1.)
+      {
+        // Land exactly on t = 1 (no sliver of a last step).
+        const double t_next =
+          (t + increment > 1. - 1e-12 * nominal) ? 1. : t + increment;
+        pcout << "\nLoad step " << step.step + 1 << ": t = " << t_next
+              << " (increment " << t_next - t << ")" << std::endl;
+        system.set_load_factor(t_next);
+        NewtonResult result;
+        try
+          {
+            result = newton.solve(system);
+          }
+        catch (const ConvergenceFailure &failure)
+          {
+            system.restore_converged_state();
+            easy_steps_in_a_row        = 0;
+            const double       smaller = 0.5 * (t_next - t);
+            std::ostringstream where;
+            where << "from t = " << t << " to t = " << t_next << ": "
+                  << failure.what();
+            if (!parameters.adaptive)
+              throw ConvergenceFailure(
+                "load step " + where.str() +
+                "\n(adaptive load stepping is off: 'Load stepping/Adaptive')");
+            if (smaller < parameters.minimum_increment)
+              {
+                std::ostringstream message;
+                message << "load step " << where.str()
+                        << "\nthe increment cannot be halved again: " << smaller
+                        << " < " << parameters.minimum_increment
+                        << " ('Load stepping/Minimum increment') after "
+                        << step.cut_backs + 1
+                        << " failed attempts; the last converged state is t = "
+                        << t << " (load step " << step.step << ")";
+                throw ConvergenceFailure(message.str());
+              }
+            ++step.cut_backs;
+            increment = smaller;
+            pcout << "   cut-back " << step.cut_backs << ": "
+                  << first_line(failure.what()) << "\n   back to t = " << t
+                  << ", increment halved to " << increment << std::endl;
+            continue;
+          }
+
+        step.step += 1;
+        step.load_factor = t_next;
+        step.increment   = t_next - t;
+        t                = t_next;
+        system.store_converged_state();
+        on_converged(step, result);
+        step.cut_backs = 0;
+
+        // Grow back towards the nominal increment after two easy steps in a
+        // row (one alone often follows a cut-back by luck).
+        easy_steps_in_a_row =
+          result.iterations() <= parameters.easy_step_iterations
+            ? easy_steps_in_a_row + 1
+            : 0;
+        if (easy_steps_in_a_row >= 2 && increment < nominal)
+          {
+            increment           = std::min(2. * increment, nominal);
+            easy_steps_in_a_row = 0;
+          }
+      }
+  }
+} // namespace hyperelastic

@@ -1,0 +1,431 @@
+// Stability cases of ../shared/reference/stress-tests.md (12 to 17): loads
+// far too large for one Newton solve, which the line search and the load-step
+// cut-back must handle, and loads past what a model can carry, which must end
+// in a reported failure. Every accepted Newton iterate is inspected.
+//
+// Usage: mpirun -np N stability CASE
+//   compress_nh      neo-Hookean block, bottom glued, top plate sliding, to
+//                    30 % of its height in one load step
+//   compress_snh     stable neo-Hookean block between frictionless plates to
+//                    30 % in one step: also against the exact homogeneous state
+//   twist_180        neo-Hookean bar twisted by 180 degrees in one load step
+//   stvk_limit       St. Venant-Kirchhoff bar pushed by a dead traction past
+//                    its compressive limit load
+//   projected        the twist with the exact tangent and with the default
+//                    fallback to the projected one (when projection helps)
+//   locking          cantilever with nu = 0.3 ... 0.499, P1 and P2
+//   collective       an error on one MPI rank only reaches every rank
+#include <deal.II/base/mpi.h>
+
+#include <hyperelastic/error_handling.h>
+#include <hyperelastic/problem.h>
+
+#include "analytic_bar.h"
+#include "checker.h"
+#include "scene_text.h"
+
+#include <cmath>
+#include <iostream>
+
+using namespace hyperelastic;
+using namespace hyperelastic::testing;
+
+namespace
+{
+  bool print = false;
+
+  struct Run
+  {
+    std::vector<StepSummary<3>> steps3;
+    std::vector<StepSummary<2>> steps2;
+    std::string                 failure; ///< empty if the run converged
+  };
+
+  template <int dim>
+  std::vector<StepSummary<dim>>
+  run_scene_text(const std::string &text, std::string &failure)
+  {
+    Parameters parameters;
+    parameters.read_from_string(text);
+    parameters.output.write_vtu = false;
+    parameters.output.verbose   = false;
+    parameters.output.directory = "output_stability";
+    Problem<dim> problem(parameters, MPI_COMM_WORLD, print);
+    try
+      {
+        problem.run();
+      }
+    catch (const ConvergenceFailure &e)
+      {
+        failure = e.what();
+      }
+    // Every case expects at least one converged step (checks read the last).
+    if (problem.summaries().empty())
+      throw ConvergenceFailure("no load step converged:\n" + failure);
+    return problem.summaries();
+  }
+
+  std::string
+  block_scene(const std::string &model,
+              const double       nu,
+              const bool         glued,
+              const std::string &extra = "")
+  {
+    return subsection("Problem", entry("Dimension", "3")) +
+           subsection("Mesh",
+                      entry("Upper corner", "1, 1, 1") +
+                        entry("Subdivisions", "6, 6, 6")) +
+           subsection("Material",
+                      entry("Model", model) + entry("Young's modulus", "1") +
+                        entry("Poisson's ratio", std::to_string(nu))) +
+           subsection("Loading", entry("Number of load steps", "1")) +
+           (glued ? dirichlet(1, 4, "x, y, z", "0; 0; 0") :
+                  // frictionless plates, and the planes x = 0, y = 0 fixed
+                  // in their normal direction against rigid motions
+              dirichlet(1, 4, "z", "0") + dirichlet(3, 0, "x", "0") +
+                dirichlet(4, 2, "y", "0")) +
+           dirichlet(2, 5, "z", "-0.7*t") + extra;
+  }
+
+  /// Checks of case 13 on every accepted iterate of every step.
+  template <int dim>
+  void
+  check_iterates(Checker                             &checker,
+                 const std::vector<StepSummary<dim>> &steps,
+                 const std::string                   &name)
+  {
+    double       smallest_J = 1e300, worst_rise = -1e300;
+    unsigned int energy_tested = 0, backtracks = 0, cut_backs = 0;
+    for (const auto &s : steps)
+      {
+        cut_backs += s.cut_backs;
+        for (const auto &row : s.newton_history)
+          {
+            // NaN (not computed) must not pass silently.
+            smallest_J = std::isfinite(row.min_J)
+                           ? std::min(smallest_J, row.min_J)
+                           : -1e300;
+            backtracks += row.backtracks;
+            if (row.energy_tested)
+              {
+                ++energy_tested;
+                // Rise of the energy along the accepted step, in units of
+                // its round-off level.
+                worst_rise = std::max(worst_rise,
+                                      (row.energy - row.energy_before) /
+                                        (row.energy_noise + 1e-300));
+              }
+          }
+      }
+    if (print)
+      std::cout << "  " << name << ": " << steps.size() << " steps, "
+                << cut_backs << " cut-backs, " << backtracks
+                << " line-search backtracks, " << energy_tested
+                << " energy-tested iterations" << std::endl;
+    checker.at_least(name + ": min J over all accepted iterates",
+                     smallest_J,
+                     1e-12);
+    checker.at_most(name + ": energy rise along a line search / noise",
+                    worst_rise,
+                    2.);
+    checker.at_least(name + ": iterations with the energy tested",
+                     energy_tested,
+                     1);
+  }
+
+  unsigned int
+  total_newton_iterations(const std::vector<StepSummary<3>> &steps)
+  {
+    unsigned int n = 0;
+    for (const auto &s : steps)
+      n += s.newton_iterations;
+    return n;
+  }
+
+  unsigned int
+  total_cut_backs(const std::vector<StepSummary<3>> &steps)
+  {
+    unsigned int n = 0;
+    for (const auto &s : steps)
+      n += s.cut_backs;
+    return n;
+  }
+
+  void
+  compress_nh(Checker &checker)
+  {
+    std::string failure;
+    const auto  steps =
+      run_scene_text<3>(block_scene("neo-Hookean", 0.3, true), failure);
+    checker.is_true("glued neo-Hookean block reaches 30 % height",
+                    failure.empty() && steps.back().load_factor == 1.);
+    check_iterates(checker, steps, "neo-Hookean");
+    checker.at_least("converged min J", steps.back().min_J, 1e-3);
+  }
+
+  void
+  compress_snh(Checker &checker)
+  {
+    std::string failure;
+    const auto  steps =
+      run_scene_text<3>(block_scene("stable neo-Hookean", 0.3, false), failure);
+    checker.is_true("stable neo-Hookean block reaches 30 % height",
+                    failure.empty() && steps.back().load_factor == 1.);
+    check_iterates(checker, steps, "stable neo-Hookean");
+    // Homogeneous: compare the lateral stretch with the exact one.
+    const double mu = 1. / 2.6, lambda = 0.3 / (1.3 * 0.4);
+    const auto   exact = uniaxial("stable neo-Hookean", 3, 0.3, mu, lambda);
+    const double l2    = steps.back().deformed_max[0];
+    checker.at_most("lateral stretch against the exact one",
+                    std::abs(l2 - exact.l2) / exact.l2,
+                    1e-8);
+  }
+
+  /// Neo-Hookean bar 3 x 1 x 1 clamped at x = 0, its end x = 3 turned by
+  /// 180 degrees about the axis (y, z) = (0.5, 0.5) in one load step.
+  std::string
+  twist_scene(const std::string &newton_entries = "")
+  {
+    return subsection("Problem", entry("Dimension", "3")) +
+           subsection("Mesh",
+                      entry("Upper corner", "3, 1, 1") +
+                        entry("Subdivisions", "12, 4, 4")) +
+           subsection("Material",
+                      entry("Model", "neo-Hookean") +
+                        entry("Young's modulus", "1") +
+                        entry("Poisson's ratio", "0.3")) +
+           subsection("Loading", entry("Number of load steps", "1")) +
+           dirichlet(1, 0, "x, y, z", "0; 0; 0") +
+           dirichlet(2,
+                     1,
+                     "x, y, z",
+                     "0; 0.5 + (y - 0.5)*cos(pi*t) - (z - 0.5)*sin(pi*t) - y; "
+                     "0.5 + (y - 0.5)*sin(pi*t) + (z - 0.5)*cos(pi*t) - z") +
+           (newton_entries.empty() ? std::string()
+                                   : subsection("Newton", newton_entries));
+  }
+
+  void
+  twist_180(Checker &checker)
+  {
+    std::string failure;
+    const auto  steps = run_scene_text<3>(twist_scene(), failure);
+    checker.is_true("bar twisted by 180 degrees in one step arrives",
+                    failure.empty() && steps.back().load_factor == 1.);
+    checker.at_least("cut-backs on the way", total_cut_backs(steps), 1);
+    check_iterates(checker, steps, "twist");
+  }
+
+  void
+  stvk_limit(Checker &checker)
+  {
+    // Homogeneous bar on rollers; P11 = E l (l^2 - 1) / 2 has its minimum
+    // -E / (3 sqrt 3) at l = 1 / sqrt 3: a compressive dead load beyond it
+    // has no solution with J > 0. Traction -0.25 E t: the limit is at
+    // t* = 0.7698.
+    const double      t_limit = 1. / (3. * std::sqrt(3.)) / 0.25;
+    const std::string scene =
+      subsection("Problem", entry("Dimension", "3")) +
+      subsection("Mesh",
+                 entry("Upper corner", "3, 1, 1") +
+                   entry("Subdivisions", "3, 1, 1")) +
+      subsection("Material",
+                 entry("Model", "St. Venant-Kirchhoff") +
+                   entry("Young's modulus", "1") +
+                   entry("Poisson's ratio", "0.3")) +
+      subsection("Loading", entry("Number of load steps", "10")) +
+      subsection("Load stepping", entry("Minimum increment", "1e-3")) +
+      dirichlet(1, 0, "x", "0") + dirichlet(2, 2, "y", "0") +
+      dirichlet(3, 4, "z", "0") +
+      subsection("Traction 1",
+                 entry("Boundary id", "1") +
+                   entry("Traction", "-0.25*t; 0; 0"));
+    std::string failure;
+    const auto  steps = run_scene_text<3>(scene, failure);
+    if (print)
+      std::cout << "  failure message: " << failure.substr(0, 300) << "..."
+                << std::endl;
+    checker.is_true("past the limit load the run fails",
+                    failure.find("cannot be halved again") !=
+                      std::string::npos);
+    checker.at_most("last converged t", steps.back().load_factor, t_limit);
+    checker.at_least("last converged t", steps.back().load_factor, 0.75);
+    double smallest_J = 1e300;
+    for (const auto &s : steps)
+      smallest_J = std::min(smallest_J, s.min_J);
+    checker.at_least("min J of every converged step", smallest_J, 1e-12);
+  }
+
+  void
+  projected(Checker &checker)
+  {
+    // The 180-degree twist with the exact tangent only, and with the default
+    // (exact, repeated with the projected tangent when the exact direction
+    // does not descend or its line search fails). The exact tangent is
+    // indefinite on the way; the projection turns a would-be cut-back into
+    // a step.
+    unsigned int iterations[2], cut_backs[2], projected_iterations[2];
+    const char  *names[2] = {"exact", "exact, projected on failure"};
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        std::string failure;
+        const auto  steps =
+          run_scene_text<3>(twist_scene(entry("Tangent", names[k])), failure);
+        checker.is_true(std::string("tangent '") + names[k] + "' arrives",
+                        failure.empty() && steps.back().load_factor == 1.);
+        iterations[k]           = total_newton_iterations(steps);
+        cut_backs[k]            = total_cut_backs(steps);
+        projected_iterations[k] = 0;
+        for (const auto &s : steps)
+          for (const auto &row : s.newton_history)
+            projected_iterations[k] += row.projected ? 1 : 0;
+        if (print)
+          std::cout << "  tangent '" << names[k] << "': " << steps.size()
+                    << " load steps, " << cut_backs[k] << " cut-backs, "
+                    << iterations[k] << " Newton iterations in converged "
+                    << "steps, " << projected_iterations[k]
+                    << " with the projected tangent" << std::endl;
+      }
+    checker.at_least("exact tangent: cut-backs", cut_backs[0], 1);
+    checker.is_true("exact tangent: no projected iteration",
+                    projected_iterations[0] == 0);
+    checker.at_least("fallback: projected iterations",
+                     projected_iterations[1],
+                     1);
+    checker.at_most("fallback: cut-backs (fewer than exact)",
+                    cut_backs[1],
+                    double(cut_backs[0]) - 1.);
+    checker.at_most("fallback: Newton iterations (not more than exact)",
+                    iterations[1],
+                    iterations[0]);
+  }
+
+  void
+  locking(Checker &checker)
+  {
+    // 2D cantilever 10 x 1 clamped at x = 0, a small shear traction at x = 10
+    // (tip deflection about 2 % of the length: the locking, not the
+    // nonlinearity, is measured). P1 locks as nu -> 0.5, P2 much less.
+    double previous_ratio = 1.1, p2_first = 0., p2_last = 0.;
+    for (const double nu : {0.3, 0.45, 0.49, 0.499})
+      {
+        double tip[2];
+        for (const unsigned int degree : {1u, 2u})
+          {
+            const std::string scene =
+              subsection("Problem",
+                         entry("Dimension", "2") +
+                           entry("Finite element degree",
+                                 std::to_string(degree))) +
+              subsection("Mesh",
+                         entry("Lower corner", "0, 0") +
+                           entry("Upper corner", "10, 1") +
+                           entry("Subdivisions", "20, 2")) +
+              subsection("Material",
+                         entry("Model", "neo-Hookean") +
+                           entry("Young's modulus", "1000") +
+                           entry("Poisson's ratio", std::to_string(nu))) +
+              subsection("Loading", entry("Number of load steps", "1")) +
+              dirichlet(1, 0, "x, y", "0; 0") +
+              subsection("Traction 1",
+                         entry("Boundary id", "1") +
+                           entry("Traction", "0; -0.005*t"));
+            std::string failure;
+            const auto  steps = run_scene_text<2>(scene, failure);
+            checker.is_true("nu = " + std::to_string(nu) + ", P" +
+                              std::to_string(degree) + " converges",
+                            failure.empty() && steps.back().load_factor == 1.);
+            tip[degree - 1] = -steps.back().deformed_min[1];
+          }
+        const double ratio = tip[0] / tip[1];
+        p2_first           = p2_first == 0. ? tip[1] : p2_first;
+        p2_last            = tip[1];
+        if (print)
+          std::cout << "  nu = " << nu << ": deflection P1 " << tip[0]
+                    << ", P2 " << tip[1] << ", P1/P2 " << ratio << std::endl;
+        checker.at_most("P1/P2 deflection ratio falls as nu grows",
+                        ratio,
+                        previous_ratio);
+        previous_ratio = ratio;
+      }
+    checker.at_most("P1/P2 deflection at nu = 0.499", previous_ratio, 0.1);
+    // Without locking, beam theory in plane strain scales the deflection by
+    // (1 - nu^2): P2 follows it within 10 %.
+    const double beam = (1. - 0.499 * 0.499) / (1. - 0.3 * 0.3);
+    checker.at_least("P2 deflection 0.499 / 0.3 over beam theory's",
+                     p2_last / p2_first / beam,
+                     0.9);
+    checker.at_most("P2 deflection 0.499 / 0.3 over beam theory's",
+                    p2_last / p2_first / beam,
+                    1.1);
+  }
+
+  void
+  collective(Checker &checker)
+  {
+    // Case 17: an error raised on one rank only (here the last) reaches
+    // every rank as the same ConvergenceFailure; no error, no exception.
+    const MPI_Comm     comm    = MPI_COMM_WORLD;
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+    std::string        message;
+    try
+      {
+        throw_convergence_failure_if_any(rank == n_ranks - 1 ? "NaN in cell 7"
+                                                             : "",
+                                         comm);
+      }
+    catch (const ConvergenceFailure &e)
+      {
+        message = e.what();
+      }
+    const std::string expected =
+      (n_ranks > 1 ? "on MPI rank " + std::to_string(n_ranks - 1) + ", "
+                   : std::string()) +
+      "NaN in cell 7";
+    const unsigned int agree =
+      dealii::Utilities::MPI::min(message == expected ? 1u : 0u, comm);
+    checker.is_true("every rank gets the failing rank's message", agree == 1);
+    bool thrown = false;
+    try
+      {
+        throw_convergence_failure_if_any("", comm);
+      }
+    catch (const ConvergenceFailure &)
+      {
+        thrown = true;
+      }
+    checker.is_true("no error anywhere: no exception",
+                    dealii::Utilities::MPI::max(thrown ? 1u : 0u, comm) == 0);
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  print = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  Checker           checker(print);
+  const std::string which  = argc > 1 ? argv[1] : "";
+  const int         status = run_and_report(
+    [&]() {
+      if (which == "compress_nh")
+        compress_nh(checker);
+      else if (which == "compress_snh")
+        compress_snh(checker);
+      else if (which == "twist_180")
+        twist_180(checker);
+      else if (which == "stvk_limit")
+        stvk_limit(checker);
+      else if (which == "projected")
+        projected(checker);
+      else if (which == "locking")
+        locking(checker);
+      else if (which == "collective")
+        collective(checker);
+      else
+        throw InputError("unknown case '" + which + "'");
+    },
+    MPI_COMM_WORLD);
+  return checker.exit_code(status);
+}
