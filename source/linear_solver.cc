@@ -9,6 +9,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <Amesos.h>
 #include <iomanip>
 #include <sstream>
 
@@ -19,6 +20,27 @@ namespace hyperelastic
   LinearSolver::LinearSolver(const LinearSolverParameters &parameters)
       : parameters(parameters)
   {
+    // Trilinos lists every Amesos solver but builds only some: ask before
+    // the first solve rather than fail in every Newton iteration. Every
+    // rank has the same library, so all throw together.
+    if (parameters.type == LinearSolverType::direct)
+      {
+        Amesos            factory;
+        std::string       available;
+        const std::string names[] = {"Amesos_Klu",
+                                     "Amesos_Umfpack",
+                                     "Amesos_Mumps",
+                                     "Amesos_Superludist"};
+        for (const std::string &name : names)
+          if (factory.Query(name))
+            available += (available.empty() ? "" : ", ") + name;
+        if (!factory.Query(parameters.direct_solver))
+          throw InputError("scene entry 'Linear solver/Direct solver' = '" +
+                           parameters.direct_solver +
+                           "': this Trilinos build does not provide it; "
+                           "available here: " +
+                           available);
+      }
   }
 
   void

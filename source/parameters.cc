@@ -547,7 +547,9 @@ namespace hyperelastic
       "Direct solver",
       "Amesos_Klu",
       Selection("Amesos_Klu|Amesos_Umfpack|Amesos_Mumps|Amesos_Superludist"),
-      "Amesos solver used by Type = direct.");
+      "Amesos solver used by Type = direct. Not every Trilinos build has "
+      "all of them (Debian 12's: Amesos_Klu and Amesos_Mumps); one that is "
+      "missing is rejected at start, with the list of those available.");
     prm.declare_entry("AMG aggregation threshold",
                       "1e-4",
                       Double(0, 1),
