@@ -23,7 +23,8 @@ namespace hyperelastic
     const DoFHandler<dim>         &dof_handler,
     const Mapping<dim>            &mapping,
     const Material<dim>           &material,
-    const BoundaryConditions<dim> &boundary_conditions)
+    const BoundaryConditions<dim> &boundary_conditions,
+    const bool                     fast_p1)
       : dof_handler(dof_handler)
       , mapping(mapping)
       , material(material)
@@ -32,6 +33,12 @@ namespace hyperelastic
       , load_quadrature(QGaussSimplex<dim>(dof_handler.get_fe().degree + 1))
       , face_quadrature(QGaussSimplex<dim - 1>(dof_handler.get_fe().degree + 1))
   {
+    if (fast_p1 && dof_handler.get_fe().degree == 1)
+      {
+        p1 = std::make_unique<P1Assembler<dim>>(dof_handler, material);
+        if (!p1->usable())
+          p1.reset();
+      }
   }
 
   namespace
@@ -219,8 +226,15 @@ namespace hyperelastic
         }
     throw_convergence_failure_if_any(error, dof_handler.get_communicator());
     // Loads are evaluated on each rank's own cells: agree before throwing.
+    throw_if_non_finite_load(data.non_finite_load);
+  }
+
+  template <int dim>
+  void
+  ElasticityOperator<dim>::throw_if_non_finite_load(const int non_finite) const
+  {
     const int bad =
-      Utilities::MPI::max(data.non_finite_load, dof_handler.get_communicator());
+      Utilities::MPI::max(non_finite, dof_handler.get_communicator());
     if (bad != 0)
       throw InputError(
         "scene entry '" +
@@ -232,12 +246,53 @@ namespace hyperelastic
   }
 
   template <int dim>
+  const VectorType &
+  ElasticityOperator<dim>::external_forces(const double t) const
+  {
+    if (t == external_cache_time)
+      return external_cache;
+    external_cache.reinit(dof_handler.locally_owned_dofs(),
+                          dof_handler.get_communicator());
+    if (boundary_conditions.body_force || !boundary_conditions.tractions.empty())
+      {
+        CellData<dim>  data(mapping,
+                           dof_handler.get_fe(),
+                           stress_quadrature,
+                           load_quadrature,
+                           face_quadrature);
+        Vector<double> cell_external(dof_handler.get_fe().dofs_per_cell);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              (boundary_conditions.body_force || cell->at_boundary()))
+            {
+              cell->get_dof_indices(data.dofs);
+              cell_external = 0.;
+              add_loads(
+                data, cell, boundary_conditions, t, &cell_external, nullptr);
+              external_cache.add(data.dofs, cell_external);
+            }
+        throw_if_non_finite_load(data.non_finite_load);
+        external_cache.compress(VectorOperation::add);
+      }
+    external_cache_time = t;
+    return external_cache;
+  }
+
+  template <int dim>
   double
   ElasticityOperator<dim>::assemble_forces(const VectorType &u,
                                            const double      t,
                                            VectorType       &internal,
                                            VectorType       &external) const
   {
+    if (p1)
+      {
+        const double magnitude_squared = p1->internal_forces(u, internal);
+        external                       = external_forces(t);
+        return std::numeric_limits<double>::epsilon() *
+               std::sqrt(Utilities::MPI::sum(magnitude_squared,
+                                             dof_handler.get_communicator()));
+      }
     internal                     = 0.;
     external                     = 0.;
     const FiniteElement<dim> &fe = dof_handler.get_fe();
@@ -293,6 +348,15 @@ namespace hyperelastic
     VectorType                      &rhs,
     const bool                       project_tangent) const
   {
+    // The kernel declines (on all ranks) constraints other than Dirichlet
+    // and matrices without its node-block sparsity.
+    if (p1 && p1->system(u,
+                         external_forces(t),
+                         constraints,
+                         project_tangent,
+                         matrix,
+                         rhs))
+      return;
     matrix                       = 0.;
     rhs                          = 0.;
     const FiniteElement<dim> &fe = dof_handler.get_fe();
@@ -364,7 +428,20 @@ namespace hyperelastic
     constexpr double round_off = 1e-13;
     double           energy = 0., magnitude = 0.;
     double           min_J = std::numeric_limits<double>::infinity();
-    for_each_cell(u, [&](const auto &cell, CellData<dim> &data) {
+    if (p1)
+      {
+        p1->stored_energy(u, with_energy, energy, magnitude, min_J);
+        if (with_energy && (boundary_conditions.body_force ||
+                            !boundary_conditions.tractions.empty()))
+          {
+            // Dead loads: their work is f_ext . u.
+            const double work = p1->local_dot(u, external_forces(t));
+            energy -= work;
+            magnitude += std::abs(work);
+          }
+      }
+    else
+      for_each_cell(u, [&](const auto &cell, CellData<dim> &data) {
       for (unsigned int q = 0; q < data.F.size(); ++q)
         {
           min_J = std::min(min_J, static_cast<double>(determinant(data.F[q])));

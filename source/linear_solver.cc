@@ -53,30 +53,11 @@ namespace hyperelastic
     this->n_components = n_components;
   }
 
-  unsigned int
-  LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
-                      TrilinosWrappers::MPI::Vector        &x,
-                      const TrilinosWrappers::MPI::Vector  &b)
+  void
+  LinearSolver::prepare(const TrilinosWrappers::SparseMatrix &A)
   {
     if (parameters.type == LinearSolverType::direct)
-      {
-        SolverControl                                  control(1, 0);
-        TrilinosWrappers::SolverDirect::AdditionalData data(
-          false, parameters.direct_solver);
-        TrilinosWrappers::SolverDirect direct(control, data);
-        try
-          {
-            direct.solve(A, x, b);
-          }
-        catch (const std::exception &e)
-          {
-            throw ConvergenceFailure("direct solver " +
-                                     parameters.direct_solver +
-                                     " failed: " + exception_message(e));
-          }
-        return 0;
-      }
-
+      return;
     // ML smoothed aggregation with the full rigid-body near-null space.
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
@@ -101,6 +82,32 @@ namespace hyperelastic
                     null_space.empty() ? &no_rows : null_space.data());
       }
     amg.initialize(A, ml_list);
+  }
+
+  unsigned int
+  LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
+                      TrilinosWrappers::MPI::Vector        &x,
+                      const TrilinosWrappers::MPI::Vector  &b)
+  {
+    if (parameters.type == LinearSolverType::direct)
+      {
+        SolverControl                                  control(1, 0);
+        TrilinosWrappers::SolverDirect::AdditionalData data(
+          false, parameters.direct_solver);
+        TrilinosWrappers::SolverDirect direct(control, data);
+        try
+          {
+            direct.solve(A, x, b);
+          }
+        catch (const std::exception &e)
+          {
+            throw ConvergenceFailure("direct solver " +
+                                     parameters.direct_solver +
+                                     " failed: " + exception_message(e));
+          }
+        return 0;
+      }
+
 
     SolverControl                           control(parameters.max_iterations,
                           parameters.relative_tolerance * b.l2_norm());

@@ -73,6 +73,15 @@ namespace hyperelastic
                       Integer(1, 2),
                       "Polynomial degree of the simplex Lagrange element: 1 "
                       "(P1, linear) or 2 (P2, quadratic).");
+    prm.declare_entry(
+      "Assembly",
+      "automatic",
+      Selection("automatic|generic"),
+      "'automatic': P1 forces, tangent and energy from the precomputed P1 "
+      "kernel (hat-function gradients and volumes stored per cell, values "
+      "written straight into the matrix rows), P2 from FEValues. 'generic': "
+      "FEValues for every degree (several times slower for P1; the reference "
+      "the kernel is tested against).");
     prm.leave_subsection();
   }
 
@@ -82,6 +91,7 @@ namespace hyperelastic
     prm.enter_subsection("Problem");
     dimension = prm.get_integer("Dimension");
     fe_degree = prm.get_integer("Finite element degree");
+    fast_p1_assembly = prm.get("Assembly") == "automatic";
     prm.leave_subsection();
   }
 

@@ -17,6 +17,10 @@
 
 #include <hyperelastic/boundary_conditions.h>
 #include <hyperelastic/materials/material.h>
+#include <hyperelastic/p1_assembler.h>
+
+#include <limits>
+#include <memory>
 
 namespace hyperelastic
 {
@@ -49,10 +53,21 @@ namespace hyperelastic
   class ElasticityOperator
   {
   public:
+    /// With @p fast_p1 (and a P1 element) forces, tangent and energy come
+    /// from the P1Assembler kernel; otherwise, and for P2, from the generic
+    /// FEValues loops (the reference the kernel is tested against).
     ElasticityOperator(const dealii::DoFHandler<dim> &dof_handler,
                        const dealii::Mapping<dim>    &mapping,
                        const Material<dim>           &material,
-                       const BoundaryConditions<dim> &boundary_conditions);
+                       const BoundaryConditions<dim> &boundary_conditions,
+                       bool                           fast_p1 = true);
+
+    /// Whether the P1 kernel is in use.
+    bool
+    uses_p1_kernel() const
+    {
+      return p1 != nullptr;
+    }
 
     /// Internal forces f_int(u) and external forces f_ext(t), unconstrained
     /// (both compressed, owned entries only). u must have ghost entries.
@@ -95,6 +110,16 @@ namespace hyperelastic
     cell_fields(const VectorType &u, double &min_J) const;
 
   private:
+    /// The external (dead-load) forces at load factor t, owned entries;
+    /// computed once per load factor (collective).
+    const VectorType &
+    external_forces(double t) const;
+
+    /// Throws InputError on every rank if a load was not finite on any
+    /// (@p bad: 0 none, 1 the body force, 2 + k traction k).
+    void
+    throw_if_non_finite_load(int bad) const;
+
     template <typename CellWorker>
     void
     for_each_cell(const VectorType &u, CellWorker &&worker) const;
@@ -109,5 +134,9 @@ namespace hyperelastic
     /// Quadrature for body forces and tractions (one degree higher).
     const dealii::Quadrature<dim>     load_quadrature;
     const dealii::Quadrature<dim - 1> face_quadrature;
+
+    std::unique_ptr<P1Assembler<dim>> p1;
+    mutable VectorType                external_cache;
+    mutable double external_cache_time = std::numeric_limits<double>::quiet_NaN();
   };
 } // namespace hyperelastic

@@ -26,6 +26,11 @@ namespace hyperelastic
                         unsigned int        n_modes,
                         unsigned int        n_components);
 
+    /// Builds the preconditioner for @p A (the AMG hierarchy; nothing for a
+    /// direct solver, which factorizes in solve()). Call before solve().
+    void
+    prepare(const dealii::TrilinosWrappers::SparseMatrix &A);
+
     /// Solves A x = b to the relative tolerance of the parameters. Returns the
     /// number of Krylov iterations (0 for a direct solve).
     unsigned int

@@ -20,6 +20,9 @@ namespace hyperelastic
   {
     unsigned int dimension = 3;
     unsigned int fe_degree = 1;
+    /// Use the precomputed P1 kernel when the degree is 1 ("Assembly =
+    /// automatic"); false: the generic FEValues loops for every degree.
+    bool fast_p1_assembly = true;
 
     static void
     declare(ParameterHandler &prm);

@@ -21,7 +21,9 @@
 #include <hyperelastic/output.h>
 #include <hyperelastic/parameters.h>
 
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace hyperelastic
@@ -48,6 +50,22 @@ namespace hyperelastic
     get_dof_handler() const
     {
       return dof_handler;
+    }
+
+    /// Wall time in seconds spent so far in each phase on this rank
+    /// ("mesh and setup", "assembly", "residual", "line search",
+    /// "preconditioner setup", "linear solve", "postprocessing", "output").
+    std::map<std::string, double>
+    wall_times() const
+    {
+      return timer.get_summary_data(dealii::TimerOutput::total_wall_time);
+    }
+
+    /// The tangent matrix of the last linearization (for benchmarks).
+    const MatrixType &
+    tangent_matrix() const
+    {
+      return tangent;
     }
 
     /// The displacement with ghost entries.
