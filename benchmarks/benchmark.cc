@@ -38,35 +38,14 @@ namespace
   std::string
   scene_text(const std::string &scene, const unsigned int n)
   {
-    const std::string common =
-      subsection("Problem", entry("Dimension", "3")) +
-      subsection("Mesh",
-                 entry("Upper corner", "4, 1, 1") +
-                   entry("Subdivisions",
-                         std::to_string(4 * n) + ", " + std::to_string(n) +
-                           ", " + std::to_string(n))) +
-      subsection("Material",
-                 entry("Model", "neo-Hookean") +
-                   entry("Young's modulus", "1") +
-                   entry("Poisson's ratio", "0.3")) +
-      subsection("Output", entry("Write VTU", "false"));
     if (scene == "bar")
-      return common + subsection("Loading", entry("Number of load steps", "2")) +
+      return bar_3d(n) +
+             subsection("Loading", entry("Number of load steps", "2")) +
              dirichlet(1, 0, "x", "0") + dirichlet(2, 2, "y", "0") +
              dirichlet(3, 4, "z", "0") +
              dirichlet(4, 1, "x", std::to_string(4. * (stretch - 1.)) + "*t");
     if (scene == "twist")
-      return common +
-             subsection("Loading",
-                        entry("Number of load steps", "4") +
-                          entry("Body force", "0; 0; -0.05")) +
-             dirichlet(1, 0, "x, y, z", "0; 0; 0") +
-             dirichlet(2,
-                       1,
-                       "x, y, z",
-                       "0; 0.5 + (y - 0.5)*cos(pi/2*t) - (z - 0.5)*sin(pi/2*t)"
-                       " - y; 0.5 + (y - 0.5)*sin(pi/2*t) + (z - 0.5)*cos(pi/2*t)"
-                       " - z");
+      return bar_3d(n) + twist_loading();
     throw InputError("unknown benchmark scene '" + scene + "' (bar, twist)");
   }
 
@@ -130,7 +109,7 @@ main(int argc, char *argv[])
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   const char *header =
     "scene,ranks,n,cells,dofs,load_steps,newton_iterations,krylov_iterations,"
-    "krylov_per_newton,t_setup,t_tangent_assembly,t_residual,t_line_search,"
+    "krylov_per_newton,amg_setups,t_setup,t_tangent_assembly,t_residual,t_line_search,"
     "t_preconditioner,t_krylov,t_output,t_total,t_spmv,"
     "assembly_per_newton_in_spmv,peak_memory_bytes,memory_per_dof_bytes,"
     "energy,error";
@@ -193,7 +172,7 @@ main(int argc, char *argv[])
                   << n << "," << n_cells << "," << n_dofs << ","
                   << problem.summaries().size() << "," << newton << ","
                   << krylov << "," << double(krylov) / std::max(newton, 1u)
-                  << "," << t["mesh and setup"] << "," << t["assembly"] << ","
+                  << "," << problem.n_preconditioner_setups() << "," << t["mesh and setup"] << "," << t["assembly"] << ","
                   << t["residual"] << "," << t["line search"] << ","
                   << t["preconditioner setup"] << "," << t["linear solve"]
                   << "," << t["output"] << "," << t_total << "," << t_spmv

@@ -10,6 +10,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include <Amesos.h>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -58,6 +59,13 @@ namespace hyperelastic
   {
     if (parameters.type == LinearSolverType::direct)
       return;
+    if (!amg_built || rebuild_requested || parameters.amg_rebuild_growth == 0.)
+      build_amg(A);
+  }
+
+  void
+  LinearSolver::build_amg(const TrilinosWrappers::SparseMatrix &A)
+  {
     // ML smoothed aggregation with the full rigid-body near-null space.
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
@@ -82,12 +90,17 @@ namespace hyperelastic
                     null_space.empty() ? &no_rows : null_space.data());
       }
     amg.initialize(A, ml_list);
+    amg_built         = true;
+    rebuild_requested = false;
+    baseline_rate     = -1.;
+    ++n_setups;
   }
 
   unsigned int
   LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
                       TrilinosWrappers::MPI::Vector        &x,
-                      const TrilinosWrappers::MPI::Vector  &b)
+                      const TrilinosWrappers::MPI::Vector  &b,
+                      const double                          relative_tolerance)
   {
     if (parameters.type == LinearSolverType::direct)
       {
@@ -108,25 +121,68 @@ namespace hyperelastic
         return 0;
       }
 
+    const bool   fresh      = baseline_rate < 0.;
+    // Iterations per decade of residual reduction, so that solves to
+    // different (inexact Newton) tolerances compare.
+    const double decades    = std::max(1., -std::log10(relative_tolerance));
+    const double rate_limit = std::max(
+      parameters.amg_rebuild_growth * baseline_rate, baseline_rate + 5. / decades);
+    // An old hierarchy gets a few times the iterations that would ask for
+    // a rebuild: if it has stopped working (its smoother tuned to another
+    // tangent can even make CG diverge), waiting for the iteration limit
+    // would cost more than the rebuild.
+    const unsigned int limit =
+      fresh ? parameters.max_iterations :
+              std::min<unsigned int>(parameters.max_iterations,
+                                     std::ceil(3. * rate_limit * decades));
+    SolverControl control = run_cg(A, x, b, relative_tolerance, limit);
+    unsigned int  iterations = control.last_step();
+    if (control.last_check() != SolverControl::success && !fresh)
+      {
+        // Rebuild for this tangent and try once more (the same decision on
+        // every rank: CG's counts are global).
+        build_amg(A);
+        x       = 0.;
+        control = run_cg(A, x, b, relative_tolerance, parameters.max_iterations);
+        iterations += control.last_step();
+        baseline_rate = control.last_step() / decades;
+      }
+    if (control.last_check() != SolverControl::success)
+      {
+        std::ostringstream message;
+        message << std::scientific << std::setprecision(3)
+                << "CG with AMG did not converge: residual "
+                << control.last_value() << " after " << control.last_step()
+                << " iterations (target " << control.tolerance()
+                << "); raise 'Linear solver/Max iterations' or use Type = "
+                   "direct";
+        throw ConvergenceFailure(message.str());
+      }
+    const double rate = control.last_step() / decades;
+    if (fresh)
+      baseline_rate = rate;
+    else if (rate > rate_limit)
+      rebuild_requested = true;
+    return iterations;
+  }
 
-    SolverControl                           control(parameters.max_iterations,
-                          parameters.relative_tolerance * b.l2_norm());
+  SolverControl
+  LinearSolver::run_cg(const TrilinosWrappers::SparseMatrix &A,
+                       TrilinosWrappers::MPI::Vector        &x,
+                       const TrilinosWrappers::MPI::Vector  &b,
+                       const double                          tolerance,
+                       const unsigned int max_iterations) const
+  {
+    SolverControl control(max_iterations, tolerance * b.l2_norm());
     SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
     try
       {
         cg.solve(A, x, b, amg);
       }
-    catch (const SolverControl::NoConvergence &e)
+    catch (const SolverControl::NoConvergence &)
       {
-        std::ostringstream message;
-        message << std::scientific << std::setprecision(3)
-                << "CG with AMG did not converge: residual " << e.last_residual
-                << " after " << e.last_step << " iterations (target "
-                << control.tolerance()
-                << "); raise 'Linear solver/Max iterations' or use Type = "
-                   "direct";
-        throw ConvergenceFailure(message.str());
+        // Reported by the caller, which may first retry.
       }
-    return control.last_step();
+    return control;
   }
 } // namespace hyperelastic

@@ -77,6 +77,34 @@ namespace hyperelastic
     return text;
   }
 
+  double
+  NewtonSolver::forcing_term(const std::vector<NewtonIteration> &history,
+                             const double residual_target) const
+  {
+    if (!parameters.inexact)
+      return 0.;
+    const double eta_max = parameters.max_forcing;
+    // The first two iterations of a load step have no residual ratio yet.
+    if (history.size() < 2)
+      return eta_max;
+    const double gamma = 0.9;
+    const double r_new = history.back().residual;
+    const double r_old = history[history.size() - 2].residual;
+    if (!(r_old > 0.) || !std::isfinite(r_new))
+      return eta_max;
+    double       eta      = gamma * (r_new / r_old) * (r_new / r_old);
+    const double previous = history.back().forcing;
+    // Safeguard: do not let the tolerance drop abruptly while the previous
+    // one was still large (Eisenstat and Walker 1996).
+    if (gamma * previous * previous > 0.1)
+      eta = std::max(eta, gamma * previous * previous);
+    // No oversolving: a linear residual below half the nonlinear target
+    // buys nothing.
+    if (r_new > 0.)
+      eta = std::max(eta, 0.5 * residual_target / r_new);
+    return std::min(eta, eta_max);
+  }
+
   bool
   NewtonSolver::line_search(NonlinearSystem  &system,
                             const bool        test_energy,
@@ -150,6 +178,8 @@ namespace hyperelastic
     // only keeps the iterates admissible.
     bool       moving_constraints = true;
     TrialPoint current; // the current iterate, energy unknown yet
+    // The residual the convergence test asks for (from the last iteration).
+    double target = 0.;
     for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
       {
         const bool fallback =
@@ -157,6 +187,11 @@ namespace hyperelastic
         NewtonIteration row;
         row.projected = parameters.tangent == NewtonTangent::projected;
         unsigned int linear_its = 0;
+        // The iteration that imposes the prescribed-displacement increment
+        // is the load step's predictor: solved fully.
+        row.forcing = (system.is_linear() || moving_constraints) ?
+                        0. :
+                        forcing_term(result.history, target);
         for (;;)
           {
             std::string failure;
@@ -165,7 +200,7 @@ namespace hyperelastic
                 moving_constraints =
                   system.assemble_linearization(moving_constraints,
                                                 row.projected);
-                linear_its += system.solve_linearization();
+                linear_its += system.solve_linearization(row.forcing);
 
                 const bool test_energy =
                   parameters.line_search && !moving_constraints;
@@ -215,14 +250,17 @@ namespace hyperelastic
         // relative to the displacements of the run. Both tests are needed:
         // with small forces (soft materials, small bodies) a residual test
         // alone would accept an unconverged state.
-        const bool residual_small =
-          norms.residual <=
-          std::max({parameters.absolute_residual_tolerance,
-                    parameters.relative_residual_tolerance * norms.scale,
-                    norms.noise});
+        target = std::max({parameters.absolute_residual_tolerance,
+                           parameters.relative_residual_tolerance * norms.scale,
+                           norms.noise});
+        const bool residual_small = norms.residual <= target;
         const bool update_small =
           row.update <= parameters.update_tolerance * system.solution_scale();
-        if (!moving_constraints && residual_small && update_small)
+        // A linear problem is solved by its first full step (to the linear
+        // solver's tolerance): a second solve would only polish round-off.
+        const bool linear_done = system.is_linear() && row.step_length == 1.;
+        if (!moving_constraints && ((residual_small && update_small) ||
+                                    linear_done))
           {
             system.verify_converged_state();
             return result;

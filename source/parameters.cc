@@ -460,6 +460,23 @@ namespace hyperelastic
       "projected on failure': full Newton, and an iteration whose direction "
       "does not descend or whose line search fails is repeated with the "
       "projected tangent.");
+    prm.declare_entry(
+      "Inexact Newton",
+      "true",
+      Bool(),
+      "Solve each linearization only as accurately as the nonlinear "
+      "residual needs (Eisenstat-Walker forcing terms, choice 2: gamma = "
+      "0.9, exponent 2, safeguarded): early iterations are cheap, and the "
+      "convergence tests, hence the final accuracy, are unchanged. Krylov "
+      "tolerances stay between 'Linear solver/Relative tolerance' and "
+      "'Maximum forcing term'. false: every solve to the linear solver's "
+      "tolerance. Ignored for the linear elastic model (one solve) and the "
+      "direct solver.");
+    prm.declare_entry("Maximum forcing term",
+                      "0.1",
+                      Double(0, 1),
+                      "Loosest relative Krylov tolerance of inexact Newton "
+                      "(used in the first two iterations of a load step).");
     prm.leave_subsection();
   }
 
@@ -474,6 +491,12 @@ namespace hyperelastic
     line_search                 = prm.get_bool("Line search");
     armijo_constant             = prm.get_double("Armijo constant");
     minimum_step_length         = prm.get_double("Minimum step length");
+    inexact                     = prm.get_bool("Inexact Newton");
+    max_forcing                 = prm.get_double("Maximum forcing term");
+    if (!(max_forcing > 0.))
+      reject("Newton/Maximum forcing term",
+             prm.get("Maximum forcing term"),
+             "must be positive");
     const std::string tangent_name = prm.get("Tangent");
     tangent = tangent_name == "exact" ? NewtonTangent::exact
               : tangent_name == "projected"
@@ -569,6 +592,16 @@ namespace hyperelastic
                       "2",
                       Integer(1, 10),
                       "Degree of the Chebyshev smoother on each level.");
+    prm.declare_entry(
+      "AMG rebuild growth",
+      "1.5",
+      Double(0),
+      "The AMG hierarchy (the expensive part of a CG solve) is kept across "
+      "Newton iterations and load steps, and rebuilt from the current "
+      "tangent once CG needs more than this factor times the iterations per "
+      "decade of residual reduction of the first solve with the hierarchy "
+      "(and at least 5 more), or when CG fails with an old hierarchy. 0: "
+      "rebuild for every solve.");
     prm.leave_subsection();
   }
 
@@ -587,6 +620,7 @@ namespace hyperelastic
     direct_solver         = prm.get("Direct solver");
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
+    amg_rebuild_growth    = prm.get_double("AMG rebuild growth");
     prm.leave_subsection();
   }
 

@@ -219,7 +219,7 @@ namespace hyperelastic
 
   template <int dim>
   unsigned int
-  Problem<dim>::solve_linearization()
+  Problem<dim>::solve_linearization(const double forcing)
   {
     {
       TimerOutput::Scope scope(timer, "preconditioner setup");
@@ -227,9 +227,20 @@ namespace hyperelastic
     }
     TimerOutput::Scope scope(timer, "linear solve");
     update                        = 0.;
-    const unsigned int iterations = linear_solver.solve(tangent, update, rhs);
+    const unsigned int iterations = linear_solver.solve(
+      tangent,
+      update,
+      rhs,
+      std::max(forcing, parameters.linear_solver.relative_tolerance));
     active_constraints->distribute(update);
     return iterations;
+  }
+
+  template <int dim>
+  bool
+  Problem<dim>::is_linear() const
+  {
+    return material->is_linear();
   }
 
   template <int dim>

@@ -45,4 +45,39 @@ namespace hyperelastic::testing
                                                       : "CG with AMG") +
                         entry("Relative tolerance", "1e-10"));
   }
+
+  /// A 4 x 1 x 1 bar of 4n x n x n boxes (6 tetrahedra each), neo-Hookean
+  /// (E = 1, nu = 0.3), no output files.
+  inline std::string
+  bar_3d(const unsigned int n)
+  {
+    return subsection("Problem", entry("Dimension", "3")) +
+           subsection("Mesh",
+                      entry("Upper corner", "4, 1, 1") +
+                        entry("Subdivisions",
+                              std::to_string(4 * n) + ", " +
+                                std::to_string(n) + ", " + std::to_string(n))) +
+           subsection("Material",
+                      entry("Model", "neo-Hookean") +
+                        entry("Young's modulus", "1") +
+                        entry("Poisson's ratio", "0.3")) +
+           subsection("Output", entry("Write VTU", "false"));
+  }
+
+  /// The bar clamped at x = 0, its end at x = 4 turned by 90 degrees about
+  /// its axis, under gravity, in 4 load steps (append to bar_3d()).
+  inline std::string
+  twist_loading()
+  {
+    return subsection("Loading",
+                      entry("Number of load steps", "4") +
+                        entry("Body force", "0; 0; -0.05")) +
+           dirichlet(1, 0, "x, y, z", "0; 0; 0") +
+           dirichlet(2,
+                     1,
+                     "x, y, z",
+                     "0; 0.5 + (y - 0.5)*cos(pi/2*t) - (z - 0.5)*sin(pi/2*t)"
+                     " - y; 0.5 + (y - 0.5)*sin(pi/2*t) + (z - 0.5)*cos(pi/2*t)"
+                     " - z");
+  }
 } // namespace hyperelastic::testing

@@ -3,6 +3,7 @@
 // solver. Failures become ConvergenceFailure on every rank.
 #pragma once
 
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -26,17 +27,29 @@ namespace hyperelastic
                         unsigned int        n_modes,
                         unsigned int        n_components);
 
-    /// Builds the preconditioner for @p A (the AMG hierarchy; nothing for a
-    /// direct solver, which factorizes in solve()). Call before solve().
+    /// Makes the preconditioner ready for @p A: builds the AMG hierarchy the
+    /// first time and when the last solve asked for a rebuild; otherwise
+    /// keeps the one built for an earlier tangent (see "AMG rebuild
+    /// growth"). Nothing for a direct solver, which factorizes in solve().
     void
     prepare(const dealii::TrilinosWrappers::SparseMatrix &A);
 
-    /// Solves A x = b to the relative tolerance of the parameters. Returns the
-    /// number of Krylov iterations (0 for a direct solve).
+    /// Solves A x = b with CG to @p relative_tolerance (the caller chooses
+    /// it; inexact Newton loosens it). If CG fails with a reused hierarchy, rebuilds it and tries
+    /// once more. Returns the number of Krylov iterations (0 for a direct
+    /// solve).
     unsigned int
     solve(const dealii::TrilinosWrappers::SparseMatrix &A,
           dealii::TrilinosWrappers::MPI::Vector        &x,
-          const dealii::TrilinosWrappers::MPI::Vector  &b);
+          const dealii::TrilinosWrappers::MPI::Vector  &b,
+          double                                        relative_tolerance);
+
+    /// How often the AMG hierarchy has been built.
+    unsigned int
+    n_preconditioner_setups() const
+    {
+      return n_setups;
+    }
 
   private:
     const LinearSolverParameters              parameters;
@@ -44,5 +57,24 @@ namespace hyperelastic
     unsigned int                              n_modes      = 0;
     unsigned int                              n_components = 1;
     dealii::TrilinosWrappers::PreconditionAMG amg;
+
+    /// Builds the hierarchy for @p A now.
+    void
+    build_amg(const dealii::TrilinosWrappers::SparseMatrix &A);
+
+    /// CG with the current hierarchy; the control tells how it ended.
+    dealii::SolverControl
+    run_cg(const dealii::TrilinosWrappers::SparseMatrix &A,
+           dealii::TrilinosWrappers::MPI::Vector        &x,
+           const dealii::TrilinosWrappers::MPI::Vector  &b,
+           double                                        tolerance,
+           unsigned int                                  max_iterations) const;
+
+    bool         amg_built         = false;
+    bool         rebuild_requested = false;
+    unsigned int n_setups          = 0;
+    /// Iterations per decade of the first solve with the current hierarchy
+    /// (negative until it has run).
+    double baseline_rate = -1.;
   };
 } // namespace hyperelastic

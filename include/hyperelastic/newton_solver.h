@@ -56,10 +56,20 @@ namespace hyperelastic
     assemble_linearization(bool impose_constraint_increment,
                            bool positive_semidefinite) = 0;
 
-    /// Solve the linearized system for the direction du; returns Krylov
-    /// iterations.
+    /// Solve the linearized system for the direction du, with a Krylov
+    /// method to the relative tolerance @p forcing (0: as accurately as the
+    /// linear solver is set up to; the system never solves more loosely
+    /// than asked). Returns Krylov iterations.
     virtual unsigned int
-    solve_linearization() = 0;
+    solve_linearization(double forcing) = 0;
+
+    /// True if the residual is linear in the unknowns: the first Newton
+    /// step, solved to the linear solver's tolerance, is the solution.
+    virtual bool
+    is_linear() const
+    {
+      return false;
+    }
 
     /// Derivative of the energy at the current iterate along du (negative for
     /// a descent direction). Valid when du leaves the constraints unchanged.
@@ -106,6 +116,8 @@ namespace hyperelastic
     double       step_length       = 1.; ///< alpha of the line search
     unsigned int backtracks        = 0;  ///< trials rejected before it
     unsigned int linear_iterations = 0;
+    /// Relative Krylov tolerance asked for (0: the linear solver's own).
+    double       forcing           = 0.;
     bool         projected         = false; ///< tangent made semi-definite
     /// Whether the energy had to decrease (sufficient decrease) in this
     /// iteration's line search; false while prescribed displacements are
@@ -150,6 +162,12 @@ namespace hyperelastic
     table(const NewtonResult &result);
 
   private:
+    /// The Eisenstat-Walker forcing term for the next linear solve, from the
+    /// rows so far of this Newton solve (0 for an exact solve).
+    double
+    forcing_term(const std::vector<NewtonIteration> &history,
+                 double                               residual_target) const;
+
     /// Backtracks from alpha = 1 until the trial is admissible and, if
     /// @p test_energy, satisfies the sufficient-decrease condition.
     /// Returns false (and the reason) if no step length down to the minimum

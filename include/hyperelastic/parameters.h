@@ -114,6 +114,10 @@ namespace hyperelastic
     double        armijo_constant             = 1e-4;
     double        minimum_step_length         = 1e-4;
     NewtonTangent tangent = NewtonTangent::exact_then_projected;
+    /// Inexact Newton: Krylov tolerances from the Eisenstat-Walker forcing
+    /// terms (choice 2), at most max_forcing.
+    bool   inexact     = true;
+    double max_forcing = 0.1;
 
     static void
     declare(ParameterHandler &prm);
@@ -147,6 +151,10 @@ namespace hyperelastic
     std::string      direct_solver         = "Amesos_Klu";
     double           aggregation_threshold = 1e-4;
     unsigned int     smoother_sweeps       = 2;
+    /// The AMG hierarchy is rebuilt once CG needs more than this factor
+    /// times the iterations (per decade of residual reduction) of the first
+    /// solve with the current hierarchy; 0: rebuilt for every solve.
+    double amg_rebuild_growth = 1.5;
 
     static void
     declare(ParameterHandler &prm);

@@ -61,6 +61,13 @@ namespace hyperelastic
       return timer.get_summary_data(dealii::TimerOutput::total_wall_time);
     }
 
+    /// How often the AMG hierarchy was built (for benchmarks).
+    unsigned int
+    n_preconditioner_setups() const
+    {
+      return linear_solver.n_preconditioner_setups();
+    }
+
     /// The tangent matrix of the last linearization (for benchmarks).
     const MatrixType &
     tangent_matrix() const
@@ -80,7 +87,9 @@ namespace hyperelastic
     assemble_linearization(bool impose_constraint_increment,
                            bool positive_semidefinite) override;
     unsigned int
-    solve_linearization() override;
+    solve_linearization(double forcing) override;
+    bool
+    is_linear() const override;
     double
     directional_derivative() const override;
     TrialPoint

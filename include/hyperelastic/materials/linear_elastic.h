@@ -53,6 +53,12 @@ namespace hyperelastic
       return true;
     }
 
+    bool
+    is_linear() const override
+    {
+      return true;
+    }
+
   private:
     static Tensor<2, dim>
     small_strain(const Tensor<2, dim> &F)

@@ -74,6 +74,14 @@ namespace hyperelastic
     virtual bool
     defined_for_inverted_elements() const = 0;
 
+    /// True if P is linear in F (dP/dF constant): one linear solve is the
+    /// whole answer.
+    virtual bool
+    is_linear() const
+    {
+      return false;
+    }
+
     const LameParameters &
     parameters() const
     {

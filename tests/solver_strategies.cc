@@ -1,0 +1,102 @@
+// The speed-ups of the solver strategy leave the answer alone:
+// - inexact Newton (Eisenstat-Walker Krylov tolerances) and a reused AMG
+//   hierarchy give the same state as exact solves with a hierarchy built
+//   for every solve (energy, reactions, displacement), with fewer AMG
+//   setups than solves and fewer CG iterations in all;
+// - the linear elastic model takes one Newton iteration (one linear solve)
+//   per load step;
+// on the ranks of MPI_COMM_WORLD.
+//
+// Usage: mpirun -np N solver_strategies
+#include <deal.II/base/mpi.h>
+
+#include <hyperelastic/error_handling.h>
+#include <hyperelastic/problem.h>
+
+#include "checker.h"
+#include "scene_text.h"
+
+using namespace dealii;
+using namespace hyperelastic;
+using namespace hyperelastic::testing;
+
+namespace
+{
+  struct Run
+  {
+    std::vector<StepSummary<3>> steps;
+    VectorType                  u;
+    unsigned int                setups = 0, newton = 0, krylov = 0;
+  };
+
+  Run
+  run(const std::string &text)
+  {
+    Parameters parameters;
+    parameters.read_from_string(text);
+    parameters.output.directory = "solver_strategies_output";
+    Problem<3> problem(parameters, MPI_COMM_WORLD, false);
+    problem.run();
+    Run r;
+    r.steps  = problem.summaries();
+    r.u      = problem.solution();
+    r.setups = problem.n_preconditioner_setups();
+    for (const auto &s : r.steps)
+      {
+        r.newton += s.newton_iterations;
+        r.krylov += s.linear_iterations;
+      }
+    return r;
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  Checker check(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+  const int status = run_and_report(
+    [&]() {
+      // 8019 unknowns: ML builds a real hierarchy (not only a coarse solve).
+      const std::string scene = bar_3d(8) + twist_loading();
+      const Run         fast  = run(scene);
+      const Run         exact = run(
+        scene + subsection("Newton", entry("Inexact Newton", "false")) +
+        subsection("Linear solver", entry("AMG rebuild growth", "0")));
+
+      const double energy = exact.steps.back().energy;
+      check.at_most("inexact + reuse vs exact: energy, relative",
+                    std::abs(fast.steps.back().energy - energy) /
+                      std::abs(energy),
+                    1e-9);
+      const Tensor<1, 3> reaction = exact.steps.back().reactions[1].second;
+      check.at_most("inexact + reuse vs exact: twisted-end reaction",
+                    (fast.steps.back().reactions[1].second - reaction).norm() /
+                      reaction.norm(),
+                    1e-7);
+      VectorType difference = fast.u;
+      difference -= exact.u;
+      check.at_most("inexact + reuse vs exact: displacement, relative",
+                    difference.linfty_norm() / exact.u.linfty_norm(),
+                    1e-7);
+      check.is_true("exact run: one AMG setup per Newton iteration (" +
+                      std::to_string(exact.setups) + ")",
+                    exact.setups == exact.newton);
+      check.at_most("reuse: AMG setups per Newton iteration",
+                    double(fast.setups) / fast.newton,
+                    0.5);
+      check.at_most("inexact Newton: CG iterations, fraction of exact",
+                    double(fast.krylov) / exact.krylov,
+                    0.8);
+
+      const Run linear =
+        run(bar_3d(4) + twist_loading() +
+            subsection("Material", entry("Model", "linear elastic")));
+      for (const auto &s : linear.steps)
+        check.is_true("linear elastic, step " + std::to_string(s.step) +
+                        ": one Newton iteration",
+                      s.newton_iterations == 1);
+    },
+    MPI_COMM_WORLD);
+  return check.exit_code(status);
+}
