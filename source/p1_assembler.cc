@@ -241,6 +241,59 @@ namespace hyperelastic
   }
 
   template <int dim>
+  inline void
+  P1Assembler<dim>::element_matrix(const Cell               &c,
+                                   const StressTangent<dim> &A,
+                                   ElementMatrix            &K) const
+  {
+    // K_ab[i][k] = |T| sum_JL g_a[J] A[i][J][k][L] g_b[L]. Two savings:
+    // dP/dF is a Hessian (A[i][J][k][L] = A[k][L][i][J]), so K_ba is the
+    // transpose of K_ab; and the gradients sum to zero, so the blocks of
+    // node 0 are minus the sums of the others. Only K_ab for 1 <= a <= b
+    // is contracted.
+    double C[n_nodes][dim][dim][dim]; // C[b][i][J][k] = sum_L A_iJkL g_b[L]
+    for (unsigned int n = 1; n < n_nodes; ++n)
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int J = 0; J < dim; ++J)
+          for (unsigned int k = 0; k < dim; ++k)
+            {
+              double s = 0.;
+              for (unsigned int L = 0; L < dim; ++L)
+                s += A[i][J][k][L] * c.grad[n][L];
+              C[n][i][J][k] = c.volume * s;
+            }
+    for (unsigned int a = 1; a < n_nodes; ++a)
+      for (unsigned int n = a; n < n_nodes; ++n)
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int k = 0; k < dim; ++k)
+            {
+              double s = 0.;
+              for (unsigned int J = 0; J < dim; ++J)
+                s += c.grad[a][J] * C[n][i][J][k];
+              K[a][n][i][k] = s;
+              K[n][a][k][i] = s;
+            }
+    for (unsigned int n = 1; n < n_nodes; ++n)
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            double s = 0.;
+            for (unsigned int a = 1; a < n_nodes; ++a)
+              s += K[a][n][i][k];
+            K[0][n][i][k] = -s;
+            K[n][0][k][i] = -s;
+          }
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int k = 0; k < dim; ++k)
+        {
+          double s = 0.;
+          for (unsigned int n = 1; n < n_nodes; ++n)
+            s += K[0][n][i][k];
+          K[0][0][i][k] = -s;
+        }
+  }
+
+  template <int dim>
   bool
   P1Assembler<dim>::system(const VectorType                &u,
                            const VectorType                &external,
@@ -285,8 +338,7 @@ namespace hyperelastic
 
     Tensor<2, dim>     P;
     StressTangent<dim> A;
-    // C[b][i][J][k] = sum_L A[i][J][k][L] g_b[L]
-    double       C[n_nodes][dim][dim][dim];
+    ElementMatrix K;
     std::string  error;
     unsigned int bad_cell = 0;
     for (unsigned int ci = 0; ci < cells.size(); ++ci)
@@ -325,16 +377,7 @@ namespace hyperelastic
             break;
           }
 
-        for (unsigned int n = 0; n < n_nodes; ++n)
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int J = 0; J < dim; ++J)
-              for (unsigned int k = 0; k < dim; ++k)
-                {
-                  double s = 0.;
-                  for (unsigned int L = 0; L < dim; ++L)
-                    s += A[i][J][k][L] * c.grad[n][L];
-                  C[n][i][J][k] = s;
-                }
+        element_matrix(c, A, K);
         bool touches_constraint = false;
         for (unsigned int n = 0; n < n_nodes; ++n)
           for (unsigned int i = 0; i < dim; ++i)
@@ -347,37 +390,39 @@ namespace hyperelastic
               const Tensor<1, dim> force = c.volume * (P * c.grad[a]);
               for (unsigned int i = 0; i < dim; ++i)
                 {
-                  const int     r         = c.row[a] + i;
-                  double *const row       = values + offsets[r];
-                  const bool    row_fixed = touches_constraint &&
-                                         !std::isnan(prescribed[c.node[a] + i]);
-                  if (!row_fixed)
-                    b[r] -= force[i];
+                  const int     r   = c.row[a] + i;
+                  double *const row = values + offsets[r];
+                  if (!touches_constraint)
+                    {
+                      // The common case: plain adds.
+                      b[r] -= force[i];
+                      for (unsigned int n = 0; n < n_nodes; ++n)
+                        {
+                          double *const block =
+                            row + block_position[ci][a * n_nodes + n];
+                          for (unsigned int k = 0; k < dim; ++k)
+                            block[k] += K[a][n][i][k];
+                        }
+                      continue;
+                    }
+                  if (!std::isnan(prescribed[c.node[a] + i]))
+                    {
+                      // A constrained row keeps only a diagonal.
+                      constrained_diagonal[r] += std::abs(K[a][a][i][i]);
+                      continue;
+                    }
+                  b[r] -= force[i];
                   for (unsigned int n = 0; n < n_nodes; ++n)
                     {
                       double *const block =
                         row + block_position[ci][a * n_nodes + n];
                       for (unsigned int k = 0; k < dim; ++k)
                         {
-                          double K = 0.;
-                          for (unsigned int J = 0; J < dim; ++J)
-                            K += c.grad[a][J] * C[n][i][J][k];
-                          K *= c.volume;
-                          if (!touches_constraint)
-                            block[k] += K;
-                          else if (row_fixed)
-                            {
-                              if (n == a && k == i)
-                                constrained_diagonal[r] += std::abs(K);
-                            }
+                          const double g = prescribed[c.node[n] + k];
+                          if (std::isnan(g))
+                            block[k] += K[a][n][i][k];
                           else
-                            {
-                              const double g = prescribed[c.node[n] + k];
-                              if (std::isnan(g))
-                                block[k] += K;
-                              else
-                                b[r] -= K * g;
-                            }
+                            b[r] -= K[a][n][i][k] * g; // column to the rhs
                         }
                     }
                 }

@@ -105,6 +105,15 @@ namespace hyperelastic
       unsigned int active_index;
     };
 
+    /// K[a][b][i][k]: the dim x dim block of nodes a and b.
+    using ElementMatrix = double[n_nodes][n_nodes][dim][dim];
+
+    /// The element tangent |T| g_a . dP/dF . g_b of every node pair.
+    void
+    element_matrix(const Cell               &cell,
+                   const StressTangent<dim> &A,
+                   ElementMatrix            &K) const;
+
     /// F = I + sum_a u_a (x) g_a.
     dealii::Tensor<2, dim>
     deformation_gradient(const Cell &cell, const double *u) const;

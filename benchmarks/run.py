@@ -1,0 +1,175 @@
+#!/usr/bin/env python3
+"""Benchmark of run time against error for hyperelastic (P1, 3D).
+
+Runs build/hyperelastic_benchmark for the homogeneous bar (exact answer known)
+and the twisted bar under gravity at increasing resolution, on 1 and 2 MPI
+ranks, writes benchmarks/results.csv and draws the figures from it.
+
+  python3 benchmarks/run.py            # run everything, then plot (~15 min)
+  python3 benchmarks/run.py --plot     # redraw the figures from results.csv
+  python3 benchmarks/run.py --quick    # small sizes only (a smoke run)
+
+The twisted bar has no closed-form answer: its error is the relative error of
+the total potential energy against a Richardson extrapolation from the three
+finest meshes (P1 energies converge like h^2).
+"""
+import argparse
+import csv
+import math
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+EXE = os.path.join(ROOT, "build", "hyperelastic_benchmark")
+MPIRUN = os.path.join(ROOT, "scripts", "mpirun.sh")
+CSV = os.path.join(HERE, "results.csv")
+
+# Cells across the bar's width: 4n x n x n boxes, 3 (4n+1)(n+1)^2 unknowns,
+# from about 1e4 to 1e6.
+SIZES = [8, 11, 16, 22, 32, 44]
+QUICK_SIZES = [6, 8, 11]
+TWO_RANK_MIN_N = 22  # 2 ranks from about 1.4e5 unknowns on
+
+
+def run_one(scene, n, ranks):
+    command = [MPIRUN, "-np", str(ranks), EXE, scene, str(n)]
+    out = subprocess.run(command, capture_output=True, text=True, cwd=HERE)
+    if out.returncode != 0:
+        sys.exit("benchmark failed: " + " ".join(command) + "\n" + out.stdout + out.stderr)
+    return out.stdout.strip().splitlines()[-1]
+
+
+def header():
+    out = subprocess.run([EXE, "--header"], capture_output=True, text=True, check=True)
+    return out.stdout.strip()
+
+
+def richardson_twist_errors(rows):
+    """Relative energy error of each twist row against the extrapolated limit."""
+    twist = sorted({int(r["n"]): float(r["energy"]) for r in rows if r["scene"] == "twist"}.items())
+    if len(twist) < 3:
+        return
+    (n1, e1), (n2, e2), (n3, e3) = twist[-3:]
+    # E(h) = E* + C h^p with h = 1/n: the order from three meshes (solved by
+    # bisection; the ratios of h are not constant), then E*.
+    def mismatch(p):
+        a = (e1 - e2) / (n1 ** -p - n2 ** -p)
+        b = (e2 - e3) / (n2 ** -p - n3 ** -p)
+        return a - b
+
+    lo, hi = 0.5, 4.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if mismatch(lo) * mismatch(mid) <= 0:
+            hi = mid
+        else:
+            lo = mid
+    p = 0.5 * (lo + hi)
+    c = (e2 - e3) / (n2 ** -p - n3 ** -p)
+    limit = e3 - c * n3 ** -p
+    print(f"twist: energy order {p:.3f}, extrapolated energy {limit:.12g}")
+    for r in rows:
+        if r["scene"] == "twist":
+            r["error"] = f"{abs(float(r['energy']) - limit) / abs(limit):.6g}"
+
+
+def plot(rows):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        sys.exit("plotting needs matplotlib: apt-get install python3-matplotlib")
+
+    def series(scene, ranks):
+        s = [r for r in rows if r["scene"] == scene and int(r["ranks"]) == ranks]
+        return sorted(s, key=lambda r: int(r["dofs"]))
+
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for scene, marker in (("bar", "o"), ("twist", "s")):
+        for ranks in (1, 2):
+            s = [r for r in series(scene, ranks) if float(r["error"]) > 0]
+            if s:
+                ax.loglog([float(r["error"]) for r in s], [float(r["t_total"]) for r in s],
+                          marker=marker, linestyle="-" if ranks == 1 else "--",
+                          label=f"{scene}, {ranks} rank{'s' if ranks > 1 else ''}")
+    ax.set_xlabel("relative error (bar: max nodal displacement; twist: energy)")
+    ax.set_ylabel("wall time [s]")
+    ax.set_title("Work-precision, P1 neo-Hookean, 3D")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "work_precision.png"), dpi=110)
+
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for scene, marker in (("bar", "o"), ("twist", "s")):
+        for ranks in (1, 2):
+            s = series(scene, ranks)
+            if s:
+                ax.loglog([int(r["dofs"]) for r in s],
+                          [1e6 * float(r["t_total"]) / int(r["dofs"]) for r in s],
+                          marker=marker, linestyle="-" if ranks == 1 else "--",
+                          label=f"{scene}, {ranks} rank{'s' if ranks > 1 else ''}")
+    ax.set_xlabel("unknowns")
+    ax.set_ylabel("wall time per unknown [µs]")
+    ax.set_title("Time per unknown (whole run)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "time_per_dof.png"), dpi=110)
+
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for scene, marker in (("bar", "o"), ("twist", "s")):
+        one = {int(r["n"]): r for r in series(scene, 1)}
+        two = {int(r["n"]): r for r in series(scene, 2)}
+        common = sorted(set(one) & set(two))
+        if common:
+            ax.semilogx([int(one[n]["dofs"]) for n in common],
+                        [float(one[n]["t_total"]) / float(two[n]["t_total"]) for n in common],
+                        marker=marker, label=scene)
+    ax.axhline(1.7, color="gray", linestyle=":", label="target 1.7")
+    ax.set_xlabel("unknowns")
+    ax.set_ylabel("speed-up, 2 ranks over 1")
+    ax.set_title("1 versus 2 MPI ranks")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "ranks.png"), dpi=110)
+    print("figures: benchmarks/work_precision.png, time_per_dof.png, ranks.png")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--plot", action="store_true", help="only redraw the figures")
+    parser.add_argument("--quick", action="store_true", help="small sizes only")
+    args = parser.parse_args()
+
+    if not args.plot:
+        if not os.path.exists(EXE):
+            sys.exit("build first: scripts/build.sh (Release)")
+        sizes = QUICK_SIZES if args.quick else SIZES
+        lines = [header()]
+        for scene in ("bar", "twist"):
+            for n in sizes:
+                for ranks in (1, 2):
+                    if ranks == 2 and n < TWO_RANK_MIN_N and not args.quick:
+                        continue
+                    line = run_one(scene, n, ranks)
+                    print(line, flush=True)
+                    lines.append(line)
+        rows = list(csv.DictReader(lines))
+        richardson_twist_errors(rows)
+        with open(CSV, "w", newline="") as f:
+            writer = csv.DictWriter(f, fieldnames=rows[0].keys())
+            writer.writeheader()
+            writer.writerows(rows)
+        print("results: benchmarks/results.csv")
+    with open(CSV) as f:
+        rows = list(csv.DictReader(f))
+    plot(rows)
+
+
+if __name__ == "__main__":
+    main()
