@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Benchmark of run time against error for hyperelastic (P1, 3D).
 
 Runs build/hyperelastic_benchmark for the homogeneous bar (exact answer known)
