@@ -22,9 +22,10 @@
 #include <hyperelastic/error_handling.h>
 #include <hyperelastic/mesh.h>
 
+#include "random_vector.h"
+
 #include "checker.h"
 
-#include <random>
 
 using namespace hyperelastic;
 using namespace hyperelastic::testing;
@@ -32,20 +33,6 @@ using namespace dealii;
 
 namespace
 {
-  /// Random entries in [-amplitude, amplitude], the same on any number of
-  /// ranks (seeded by the global dof index).
-  void
-  fill_random(VectorType &v, const double amplitude, const unsigned int seed)
-  {
-    for (const auto i : v.locally_owned_elements())
-      {
-        std::mt19937                           rng(seed * 1000003u + i);
-        std::uniform_real_distribution<double> d(-amplitude, amplitude);
-        v(i) = d(rng);
-      }
-    v.compress(VectorOperation::insert);
-  }
-
   double
   relative_difference(VectorType a, VectorType b)
   {

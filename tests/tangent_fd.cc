@@ -20,29 +20,17 @@
 #include <hyperelastic/error_handling.h>
 #include <hyperelastic/mesh.h>
 
+#include "random_vector.h"
+
 #include <iomanip>
 #include <iostream>
-#include <random>
 
 using namespace hyperelastic;
+using namespace hyperelastic::testing;
 using namespace dealii;
 
 namespace
 {
-  /// Random entries in [-amplitude, amplitude] on the owned dofs, the same
-  /// on any number of ranks (seeded by the global dof index).
-  void
-  fill_random(VectorType &v, const double amplitude, const unsigned int seed)
-  {
-    for (const auto i : v.locally_owned_elements())
-      {
-        std::mt19937                           rng(seed * 1000003u + i);
-        std::uniform_real_distribution<double> d(-amplitude, amplitude);
-        v(i) = d(rng);
-      }
-    v.compress(VectorOperation::insert);
-  }
-
   template <int dim>
   double
   worst_error(const std::string &model, const unsigned int degree)
