@@ -84,6 +84,37 @@ namespace hyperelastic::testing
         const double cof = dim == 3 ? l2 * l2 : l2;
         return {l2, shear(l2) * l1 + lambda_s * (J(l2) - alpha) * cof};
       }
+    if (model == "decoupled neo-Hookean")
+      {
+        // psi = kappa/4 (J^2 - 1 - 2 ln J) + mu/2 (J^(-2/3) I1 - 3) gives
+        // P = kappa/2 (J^2 - 1) F^-T + mu J^(-2/3) (F - I1/3 F^-T), with
+        // kappa = lambda + 2 mu / 3 and the 3D I1 (F33 = 1 in plane strain).
+        const double kappa = lambda + 2. / 3. * mu;
+        const auto   J  = [&](double l2) { return l1 * std::pow(l2, dim - 1); };
+        const auto   I1 = [&](double l2) {
+          return l1 * l1 + l2 * l2 + (dim == 3 ? l2 * l2 : 1.);
+        };
+        // P_aa = (kappa/2 (J^2 - 1) + mu J^(-2/3) (l_a^2 - I1/3)) / l_a.
+        const auto stretch_term = [&](double l2, double la) {
+          return 0.5 * kappa * (J(l2) * J(l2) - 1.) +
+                 mu * std::pow(J(l2), -2. / 3.) * (la * la - I1(l2) / 3.);
+        };
+        // P22 = 0 <=> g(l2) = l2 P22 = 0. With c = l1^(-2/3) / 3:
+        //   3D: g = kappa/2 (J^2 - 1) + mu c (l2^(2/3) - l1^2 l2^(-4/3)),
+        //   2D: g = kappa/2 (J^2 - 1) + mu c (2 l2^(4/3) - (l1^2 + 1)
+        //                                      l2^(-2/3)),
+        // every term increasing in l2 > 0, so g has at most one root. g <= 0
+        // where J <= 1 and l2^2 <= I1/3 (both parts <= 0), g >= 0 where both
+        // are >= 1 and >= I1/3; l2^2 <= I1/3 means l2 <= l1 (3D) or
+        // l2^2 <= (l1^2 + 1)/2 (2D). So the root lies in [lower, upper]:
+        const double l_J1    = std::pow(l1, -1. / (dim - 1)); // J = 1
+        const double l_shear = dim == 3 ? l1 : std::sqrt(0.5 * (l1 * l1 + 1.));
+        const double l2 =
+          bisect([&](double l2) { return stretch_term(l2, l2); },
+                 std::min(l_J1, l_shear),
+                 std::max(l_J1, l_shear));
+        return {l2, stretch_term(l2, l1) / l1};
+      }
     if (model == "St. Venant-Kirchhoff")
       {
         const double E11 = 0.5 * (l1 * l1 - 1.);

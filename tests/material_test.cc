@@ -13,7 +13,10 @@
 //      into inversion, consistent with finite differences at J = 0, a lower
 //      bound psi >= lambda'/2 (J - 1)^2 - 0.807 mu' (so psi -> infinity as
 //      J -> -infinity), the mirror identity psi(F) - psi(F M), and plane
-//      strain equal to the 3D model at diag(F, 1).
+//      strain equal to the 3D model at diag(F, 1);
+//   8. decoupled neo-Hookean only: the volumetric and isochoric parts by hand
+//      (pure dilatation c I, isochoric F with J = 1), psi >= 0, and plane
+//      strain equal to the 3D model at diag(F, 1) (J > 0).
 // Every model named by material_model_names() is tested in 2D and 3D. One table
 // row per (model, dim, check) shows the worst error over all samples of that
 // row; the program ends with "N passed, M failed" and fails if M > 0.
@@ -999,7 +1002,8 @@ namespace
     for (const std::string &name : models)
       {
         const auto material = create_material<dim>(name, test_parameters());
-        const bool expected_defined = (name != "neo-Hookean");
+        const bool expected_defined =
+          (name != "neo-Hookean" && name != "decoupled neo-Hookean");
         report.record(name,
                       dim,
                       "defined_for_inverted_elements()",
@@ -1298,21 +1302,25 @@ namespace
   }
 
   /// Plane strain is the 3D model at diag(F, 1): psi equal, and the in-plane
-  /// blocks of P and dP/dF equal, for J > 0, J < 0 and J = 0.
+  /// blocks of P and dP/dF equal, for J > 0, and for J < 0 and J = 0 where
+  /// the model is defined there.
   void
-  check_stable_neo_hookean_plane_strain(Report &report)
+  check_plane_strain(Report &report, const std::string &model)
   {
-    const LameParameters lame    = test_parameters();
-    const auto           planar  = create_material<2>(stable_neo_hookean, lame);
-    const auto           spatial = create_material<3>(stable_neo_hookean, lame);
+    const LameParameters lame     = test_parameters();
+    const auto           planar   = create_material<2>(model, lame);
+    const auto           spatial  = create_material<3>(model, lame);
+    const bool           inverted = planar->defined_for_inverted_elements();
     RandomTensors        random(700);
     Worst                error;
     for (unsigned int s = 0; s < 3 * n_samples; ++s)
       {
         const Tensor<2, 2> F =
-          s % 3 == 2 ? flattened<2>(random)
-                     : random.deformation<2>(
-                         sample_determinant(random, s, s % 3 == 0 ? 1. : -1.));
+          !inverted ? random.deformation<2>(sample_determinant(random, s, 1.))
+          : s % 3 == 2
+            ? flattened<2>(random)
+            : random.deformation<2>(
+                sample_determinant(random, s, s % 3 == 0 ? 1. : -1.));
         Tensor<2, 3> F3;
         F3[2][2] = 1.;
         for (unsigned int i = 0; i < 2; ++i)
@@ -1339,12 +1347,89 @@ namespace
                                (A - A3_block).norm() / A3.norm()}),
                      F);
       }
-    report.below(stable_neo_hookean,
+    report.below(model,
                  2,
-                 "plane strain = 3D at diag(F, 1): psi, P, dP/dF",
+                 std::string("plane strain = 3D at diag(F, 1): psi, P, dP/dF") +
+                   (inverted ? "" : ", J>0"),
                  error.value,
                  1e-13,
                  error.worst_case);
+  }
+
+  // ------------------------------------------- 8. decoupled neo-Hookean
+
+  const std::string decoupled_neo_hookean = "decoupled neo-Hookean";
+
+  /// The two parts of psi = kappa/4 (J^2 - 1 - 2 ln J) + mu/2 (J^(-2/3) I1 -
+  /// 3), kappa = lambda + 2 mu / 3, each checked alone against the formula
+  /// written out by hand (I1 of the 3D F, so + 1 in plane strain), and
+  /// psi >= 0 (J^2 - 1 - 2 ln J >= 0, J^(-2/3) I1 >= 3 by AM-GM).
+  template <int dim>
+  void
+  check_decoupled_neo_hookean(Report &report)
+  {
+    const LameParameters lame = test_parameters();
+    const auto    material = create_material<dim>(decoupled_neo_hookean, lame);
+    const double  kappa    = lame.lambda + 2. / 3. * lame.mu;
+    RandomTensors random(800 + dim);
+
+    // Pure dilatation F = c I: J = c^dim; in 3D the isochoric part vanishes,
+    // in plane strain I1 = 2 c^2 + 1 and J^(-2/3) = c^(-4/3).
+    Worst dilatation_error;
+    for (unsigned int s = 0; s < n_samples; ++s)
+      {
+        // Away from c = 1, where psi -> 0 and the relative error is
+        // round-off over a vanishing value.
+        const double   c = s % 2 == 0 ? random.log_uniform(0.5, 0.8)
+                                      : random.log_uniform(1.25, 1.5);
+        Tensor<2, dim> F = identity<dim>();
+        F *= c;
+        const double J = std::pow(c, dim);
+        const double expected =
+          0.25 * kappa * (J * J - 1. - 2. * std::log(J)) +
+          (dim == 3 ? 0.
+                    : 0.5 * lame.mu *
+                        (std::pow(c, -4. / 3.) * (2. * c * c + 1.) - 3.));
+        dilatation_error.update(
+          std::abs(material->energy_density(F) - expected) / expected, F);
+      }
+    report.below(decoupled_neo_hookean,
+                 dim,
+                 "psi(c I) by hand (kappa = lambda + 2mu/3)",
+                 dilatation_error.value,
+                 1e-12,
+                 dilatation_error.worst_case);
+
+    // Isochoric F (J = 1): psi = mu/2 (I1 - 3), the volumetric part is 0.
+    Worst isochoric_error;
+    for (unsigned int s = 0; s < n_samples; ++s)
+      {
+        const Tensor<2, dim> F = random.deformation<dim>(1.);
+        const double expected  = 0.5 * lame.mu * (scalar_product(F, F) - dim);
+        isochoric_error.update(
+          std::abs(material->energy_density(F) - expected) / expected, F);
+      }
+    report.below(decoupled_neo_hookean,
+                 dim,
+                 "psi = mu/2 (I1 - 3) at J = 1",
+                 isochoric_error.value,
+                 1e-12,
+                 isochoric_error.worst_case);
+
+    Worst lowest(false);
+    for (unsigned int s = 0; s < n_samples; ++s)
+      {
+        const Tensor<2, dim> F =
+          random.deformation<dim>(sample_determinant(random, s, 1.));
+        lowest.update(material->energy_density(F), F);
+      }
+    report.record(decoupled_neo_hookean,
+                  dim,
+                  "min psi over random J in [0.2, 3]",
+                  lowest.value,
+                  ">= 0",
+                  lowest.value >= 0.,
+                  lowest.worst_case);
   }
 
   template <int dim>
@@ -1379,6 +1464,13 @@ namespace
                        "D  7. stable neo-Hookean: J <= 0 and energy growth");
         check_stable_neo_hookean<dim>(report);
       }
+    if (std::find(models.begin(), models.end(), decoupled_neo_hookean) !=
+        models.end())
+      {
+        report.section(std::to_string(dim) +
+                       "D  8. decoupled neo-Hookean: the two parts by hand");
+        check_decoupled_neo_hookean<dim>(report);
+      }
   }
 } // namespace
 
@@ -1395,7 +1487,10 @@ main()
       run_all<2>(report, models);
       run_all<3>(report, models);
       report.section("7. stable neo-Hookean: plane strain = 3D at diag(F, 1)");
-      check_stable_neo_hookean_plane_strain(report);
+      check_plane_strain(report, stable_neo_hookean);
+      report.section(
+        "8. decoupled neo-Hookean: plane strain = 3D at diag(F, 1)");
+      check_plane_strain(report, decoupled_neo_hookean);
       return report.finish();
     }
   catch (const std::exception &exception)

@@ -168,7 +168,8 @@ main(int argc, char *argv[])
                                       "St. Venant-Kirchhoff",
                                       "corotational",
                                       "neo-Hookean",
-                                      "stable neo-Hookean"})
+                                      "stable neo-Hookean",
+                                      "decoupled neo-Hookean"})
         {
           compare<2>(model, false, check);
           compare<3>(model, false, check);

@@ -110,8 +110,10 @@ main(int argc, char *argv[])
   unsigned int passed = 0, failed = 0;
   const int    status = run_and_report(
     [&]() {
-      for (const std::string model :
-           {"St. Venant-Kirchhoff", "corotational", "neo-Hookean"})
+      for (const std::string model : {"St. Venant-Kirchhoff",
+                                      "corotational",
+                                      "neo-Hookean",
+                                      "decoupled neo-Hookean"})
         for (const unsigned int degree : {1u, 2u})
           for (const int dim : {2, 3})
             {

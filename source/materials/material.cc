@@ -2,6 +2,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <hyperelastic/materials/corotational.h>
+#include <hyperelastic/materials/decoupled_neo_hookean.h>
 #include <hyperelastic/materials/linear_elastic.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/materials/neo_hookean.h>
@@ -35,7 +36,7 @@ namespace hyperelastic
   material_model_names()
   {
     return "linear elastic|St. Venant-Kirchhoff|corotational|neo-Hookean|"
-           "stable neo-Hookean";
+           "stable neo-Hookean|decoupled neo-Hookean";
   }
 
   template <int dim>
@@ -52,6 +53,8 @@ namespace hyperelastic
       return std::make_unique<NeoHookean<dim>>(lame);
     if (name == "stable neo-Hookean")
       return std::make_unique<StableNeoHookean<dim>>(lame);
+    if (name == "decoupled neo-Hookean")
+      return std::make_unique<DecoupledNeoHookean<dim>>(lame);
     AssertThrow(false,
                 dealii::ExcMessage(
                   "Unknown material model '" + name +
