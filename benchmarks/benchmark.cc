@@ -4,21 +4,34 @@
 // memory, the time of one sparse matrix-vector product with the assembled
 // tangent, and the error.
 //
-// Usage: mpirun -np R hyperelastic_benchmark SCENE N [--header]
+// Usage: mpirun -np R hyperelastic_benchmark SCENE N [DEGREE] [--header]
 //   SCENE bar    homogeneous uniaxial stretch of a 4 x 1 x 1 bar to 1.5 times
 //                its length on symmetry rollers; error: largest nodal
 //                displacement error against the exact solution, relative
 //   SCENE twist  the bar clamped at x = 0, its end turned by 90 degrees about
 //                its axis, under gravity; error: computed by run.py from the
 //                stored energy against the finest run
-//   N            cells across the bar's width (4N x N x N boxes, 6 tets each)
+//   SCENE manufactured  the unit cube in the manufactured finite-strain
+//                motion of tests/manufactured_motion.h (90-degree rotation of
+//                a smoothly deformed cube, body force -Div P), neo-Hookean;
+//                error: L2 error of the displacement relative to its L2
+//                norm (error_h1: the same in the H1 seminorm)
+//   N            cells across the bar's width (4N x N x N boxes, 6 tets each;
+//                manufactured: N x N x N boxes)
+//   DEGREE       1 (default) or 2
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
 #include <hyperelastic/error_handling.h>
 #include <hyperelastic/problem.h>
 
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/numerics/vector_tools.h>
+
 #include "../tests/analytic_bar.h"
+#include "../tests/manufactured_motion.h"
 #include "../tests/scene_text.h"
 
 #include <sys/resource.h>
@@ -36,8 +49,32 @@ namespace
   constexpr double stretch = 1.5; // bar scene: final length / initial
 
   std::string
-  scene_text(const std::string &scene, const unsigned int n)
+  scene_text(const std::string &scene, const unsigned int n, const unsigned int degree)
   {
+    const std::string element =
+      subsection("Problem", entry("Finite element degree", std::to_string(degree)));
+    if (scene == "manufactured")
+      {
+        const std::string N = std::to_string(n);
+        std::string       text =
+          subsection("Problem",
+                     entry("Dimension", "3") +
+                       entry("Finite element degree", std::to_string(degree))) +
+          subsection("Mesh",
+                     entry("Lower corner", "0, 0, 0") + entry("Upper corner", "1, 1, 1") +
+                       entry("Subdivisions", N + ", " + N + ", " + N)) +
+          subsection("Material",
+                     entry("Model", "neo-Hookean") + entry("Elastic constants", "Lame") +
+                       entry("Shear modulus", "1") + entry("Lame lambda", "1.5")) +
+          subsection("Loading", entry("Number of load steps", "4")) +
+          subsection("Output", entry("Write VTU", "false"));
+        // Placeholders, replaced by the exact displacement.
+        for (unsigned int id = 0; id < 6; ++id)
+          text += dirichlet(id + 1, id, "x, y, z", "0; 0; 0");
+        return text;
+      }
+    if (degree != 1)
+      return scene_text(scene, n, 1) + element;
     if (scene == "bar")
       return bar_3d(n) +
              subsection("Loading", entry("Number of load steps", "2")) +
@@ -67,6 +104,28 @@ namespace
                              std::abs(u[cell->vertex_dof_index(v, c)] -
                                       strain[c] * cell->vertex(v)[c]));
     return Utilities::MPI::max(error, MPI_COMM_WORLD) / (4. * (stretch - 1.));
+  }
+
+  /// Errors of the displacement in L2 and in the H1 seminorm, relative to
+  /// the norms of the exact displacement.
+  std::pair<double, double>
+  manufactured_errors(const Problem<3> &problem)
+  {
+    const auto               &dof_handler = problem.get_dof_handler();
+    const MappingFE<3>        mapping(FE_SimplexP<3>(1));
+    const QGaussSimplex<3>    quadrature(dof_handler.get_fe().degree + 2);
+    ExactDisplacement<3>      exact;
+    exact.set_time(1.);
+    VectorType zero(problem.solution());
+    zero = 0.;
+    Vector<double> cellwise(dof_handler.get_triangulation().n_active_cells());
+    const auto     norm = [&](const VectorType &u, const VectorTools::NormType type) {
+      VectorTools::integrate_difference(mapping, dof_handler, u, exact, cellwise, quadrature, type);
+      return VectorTools::compute_global_error(dof_handler.get_triangulation(), cellwise, type);
+    };
+    return {norm(problem.solution(), VectorTools::L2_norm) / norm(zero, VectorTools::L2_norm),
+            norm(problem.solution(), VectorTools::H1_seminorm) /
+              norm(zero, VectorTools::H1_seminorm)};
   }
 
   /// Seconds of one product y = K x with the assembled tangent (the best
@@ -112,7 +171,7 @@ main(int argc, char *argv[])
     "krylov_per_newton,amg_setups,t_setup,t_tangent_assembly,t_residual,t_line_search,"
     "t_preconditioner,t_krylov,t_output,t_total,t_spmv,"
     "assembly_per_newton_in_spmv,peak_memory_bytes,memory_per_dof_bytes,"
-    "energy,error";
+    "energy,error,degree,error_h1";
   if (argc > 1 && std::string(argv[1]) == "--header")
     {
       if (root)
@@ -122,16 +181,24 @@ main(int argc, char *argv[])
   return run_and_report(
     [&]() {
       if (argc < 3)
-        throw InputError("usage: hyperelastic_benchmark bar|twist N");
-      const std::string  scene = argv[1];
-      const unsigned int n     = std::stoul(argv[2]);
+        throw InputError("usage: hyperelastic_benchmark bar|twist|manufactured N [DEGREE]");
+      const std::string  scene  = argv[1];
+      const unsigned int n      = std::stoul(argv[2]);
+      const unsigned int degree = argc > 3 ? std::stoul(argv[3]) : 1;
       Parameters         parameters;
-      parameters.read_from_string(scene_text(scene, n));
+      parameters.read_from_string(scene_text(scene, n, degree));
       parameters.output.directory = "output_benchmark";
       parameters.output.verbose   = false;
 
       Timer      total;
       Problem<3> problem(parameters, MPI_COMM_WORLD, false);
+      const auto material = create_material<3>("neo-Hookean", parameters.material.lame);
+      if (scene == "manufactured")
+        problem.set_load_editor([&](BoundaryConditions<3> &bc) {
+          for (auto &d : bc.dirichlet)
+            d.displacement = std::make_unique<ExactDisplacement<3>>();
+          bc.body_force = std::make_unique<ManufacturedBodyForce<3>>(*material);
+        });
       problem.run();
       total.stop();
 
@@ -151,7 +218,9 @@ main(int argc, char *argv[])
       const double t_spmv  = spmv_seconds(problem.tangent_matrix());
       const double memory  = peak_memory_bytes();
       const auto   n_dofs  = problem.get_dof_handler().n_dofs();
-      const double error   = scene == "bar" ? bar_error(problem) : 0.;
+      const auto errors = scene == "manufactured" ? manufactured_errors(problem) :
+                                                    std::make_pair(0., 0.);
+      const double error = scene == "bar" ? bar_error(problem) : errors.first;
       const double t_total = Utilities::MPI::max(total.wall_time(),
                                                  MPI_COMM_WORLD);
       const char *phases[] = {"mesh and setup",
@@ -182,7 +251,8 @@ main(int argc, char *argv[])
                   << "," << memory << "," << memory / n_dofs << ","
                   << std::setprecision(12)
                   << problem.summaries().back().energy << ","
-                  << std::setprecision(6) << error << std::endl;
+                  << std::setprecision(6) << error << "," << degree << ","
+                  << errors.second << std::endl;
     },
     MPI_COMM_WORLD);
 }

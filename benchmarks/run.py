@@ -8,6 +8,9 @@ ranks, writes benchmarks/results.csv and draws the figures from it.
   python3 benchmarks/run.py            # run everything, then plot (~15 min)
   python3 benchmarks/run.py --plot     # redraw the figures from results.csv
   python3 benchmarks/run.py --quick    # small sizes only (a smoke run)
+  python3 benchmarks/run.py --degrees  # P1 against P2 on the manufactured
+                                       # solution: degrees.csv and
+                                       # work_precision_degree.png (~10 min)
 
 The twisted bar has no closed-form answer: its error is the relative error of
 the total potential energy against a Richardson extrapolation from the three
@@ -25,6 +28,11 @@ ROOT = os.path.dirname(HERE)
 EXE = os.path.join(ROOT, "build", "hyperelastic_benchmark")
 MPIRUN = os.path.join(ROOT, "scripts", "mpirun.sh")
 CSV = os.path.join(HERE, "results.csv")
+DEGREES_CSV = os.path.join(HERE, "degrees.csv")
+# Manufactured solution (unit cube, n x n x n boxes), per degree; each list
+# ends near 1e5 unknowns.
+DEGREE_SIZES = {1: [4, 6, 8, 11, 16, 22, 32], 2: [2, 3, 4, 6, 8, 11, 16]}
+QUICK_DEGREE_SIZES = {1: [4, 6], 2: [2, 3]}
 
 # Cells across the bar's width: 4n x n x n boxes, 3 (4n+1)(n+1)^2 unknowns,
 # from about 1e4 to 1e6.
@@ -33,8 +41,8 @@ QUICK_SIZES = [6, 8, 11]
 TWO_RANK_MIN_N = 22  # 2 ranks from about 1.4e5 unknowns on
 
 
-def run_one(scene, n, ranks):
-    command = [MPIRUN, "-np", str(ranks), EXE, scene, str(n)]
+def run_one(scene, n, ranks, degree=1):
+    command = [MPIRUN, "-np", str(ranks), EXE, scene, str(n), str(degree)]
     out = subprocess.run(command, capture_output=True, text=True, cwd=HERE)
     if out.returncode != 0:
         sys.exit("benchmark failed: " + " ".join(command) + "\n" + out.stdout + out.stderr)
@@ -140,11 +148,55 @@ def plot(rows):
     print("figures: benchmarks/work_precision.png, time_per_dof.png, ranks.png")
 
 
+def plot_degrees(rows):
+    """Wall time against the L2 and H1 errors of the manufactured solution."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for degree, marker in ((1, "o"), (2, "s")):
+        s = sorted((r for r in rows if int(r["degree"]) == degree), key=lambda r: int(r["dofs"]))
+        for column, style, norm in (("error", "-", "L2"), ("error_h1", "--", "H1")):
+            ax.loglog([float(r[column]) for r in s], [float(r["t_total"]) for r in s],
+                      marker=marker, linestyle=style, label=f"P{degree}, {norm} error")
+    ax.set_xlabel("relative error of the displacement")
+    ax.set_ylabel("wall time [s] (2 ranks)")
+    ax.set_title("P1 against P2: manufactured solution, neo-Hookean, 3D")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "work_precision_degree.png"), dpi=110)
+    print("figure: benchmarks/work_precision_degree.png")
+
+
+def run_degrees(quick):
+    sizes = QUICK_DEGREE_SIZES if quick else DEGREE_SIZES
+    lines = [header()]
+    for degree, ns in sizes.items():
+        for n in ns:
+            line = run_one("manufactured", n, 2, degree)
+            print(line, flush=True)
+            lines.append(line)
+    with open(DEGREES_CSV, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("results: benchmarks/degrees.csv")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--plot", action="store_true", help="only redraw the figures")
     parser.add_argument("--quick", action="store_true", help="small sizes only")
+    parser.add_argument("--degrees", action="store_true",
+                        help="P1 against P2 on the manufactured solution")
     args = parser.parse_args()
+
+    if args.degrees:
+        if not args.plot:
+            run_degrees(args.quick)
+        with open(DEGREES_CSV) as f:
+            plot_degrees(list(csv.DictReader(f)))
+        return
 
     if not args.plot:
         if not os.path.exists(EXE):

@@ -94,7 +94,12 @@ namespace hyperelastic
     Vector<float> rank(dof_handler.get_triangulation().n_active_cells());
     rank = static_cast<float>(Utilities::MPI::this_mpi_process(comm));
     data_out.add_data_vector(rank, "mpi_rank", DataOut<dim>::type_cell_data);
-    data_out.build_patches(mapping);
+    // P2: every cell becomes one quadratic VTK cell (6-node triangle,
+    // 10-node tetrahedron) whose mid-edge nodes carry the mid-edge values,
+    // so ParaView shows the field and the deformed edges as the element
+    // has them. P1: linear cells.
+    const unsigned int degree = dof_handler.get_fe().degree;
+    data_out.build_patches(mapping, degree > 1 ? 2 : 1);
 
     const std::string pvtu = data_out.write_vtu_with_pvtu_record(
       parameters.directory + "/", parameters.base_name, step, comm, 4);
@@ -124,6 +129,9 @@ namespace hyperelastic
         for (unsigned int d = 0; d < dim; ++d)
           csv << ",deformed_min_" << axes[d] << ",deformed_max_" << axes[d];
         csv << ",load_increment,cut_backs,line_search_backtracks";
+        for (unsigned int k = 0; k < s.point_displacements.size(); ++k)
+          for (unsigned int d = 0; d < dim; ++d)
+            csv << ",point" << k + 1 << "_u" << axes[d];
         csv << '\n';
       }
     csv << s.step << ',' << std::setprecision(16) << s.load_factor << ','
@@ -135,6 +143,9 @@ namespace hyperelastic
     for (unsigned int d = 0; d < dim; ++d)
       csv << ',' << s.deformed_min[d] << ',' << s.deformed_max[d];
     csv << ',' << s.load_increment << ',' << s.cut_backs << ',' << s.backtracks;
+    for (const auto &displacement : s.point_displacements)
+      for (unsigned int d = 0; d < dim; ++d)
+        csv << ',' << displacement[d];
     csv << std::endl;
   }
 

@@ -173,14 +173,22 @@ namespace hyperelastic
                       "Constitutive model: 'linear elastic' (small strain), "
                       "'St. Venant-Kirchhoff', 'corotational' (ARAP when "
                       "lambda = 0), 'neo-Hookean' (log barrier: undefined "
-                      "for inverted elements) or 'stable neo-Hookean' (Smith, "
+                      "for inverted elements), 'stable neo-Hookean' (Smith, "
                       "de Goes, Kim 2018; finite for inverted elements; the "
-                      "same small-strain E and nu). See README, 'Choosing a "
-                      "model'.");
+                      "same small-strain E and nu) or 'decoupled neo-Hookean' "
+                      "(psi = kappa/4 (J^2 - 1 - 2 ln J) + mu/2 (J^(-2/3) I1 "
+                      "- 3), the model of the finite-strain literature, e.g. "
+                      "Cook's membrane; bulk modulus kappa = lambda + 2 mu / "
+                      "3; undefined for inverted elements). See README, "
+                      "'Choosing a model'.");
     prm.declare_entry("Elastic constants",
                       "Young's modulus and Poisson's ratio",
-                      Selection("Young's modulus and Poisson's ratio|Lame"),
-                      "Which pair of constants the scene gives.");
+                      Selection("Young's modulus and Poisson's ratio|Lame|"
+                                "shear and bulk modulus"),
+                      "Which pair of constants the scene gives: (E, nu), "
+                      "the Lame constants (mu, lambda), or the shear and "
+                      "bulk moduli (mu, kappa), converted to lambda = kappa "
+                      "- 2 mu / 3.");
     prm.declare_entry(
       "Young's modulus",
       "1",
@@ -194,12 +202,18 @@ namespace hyperelastic
     prm.declare_entry("Shear modulus",
                       "1",
                       Double(),
-                      "Lame mu > 0 (used with 'Lame').");
+                      "Lame mu > 0 (used with 'Lame' and 'shear and bulk "
+                      "modulus').");
     prm.declare_entry("Lame lambda",
                       "1",
                       Double(),
                       "Lame lambda, with lambda + 2 mu / 3 > 0 (used with "
                       "'Lame').");
+    prm.declare_entry("Bulk modulus",
+                      "1",
+                      Double(),
+                      "kappa > 0 (used with 'shear and bulk modulus'; "
+                      "lambda = kappa - 2 mu / 3).");
     prm.leave_subsection();
   }
 
@@ -207,8 +221,28 @@ namespace hyperelastic
   MaterialParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    model = prm.get("Model");
-    if (prm.get("Elastic constants") == "Lame")
+    model                       = prm.get("Model");
+    const std::string constants = prm.get("Elastic constants");
+    if (constants == "shear and bulk modulus")
+      {
+        lame.mu            = get_finite(prm, "Material", "Shear modulus");
+        const double kappa = get_finite(prm, "Material", "Bulk modulus");
+        if (!(lame.mu > 0.))
+          reject("Material/Shear modulus",
+                 prm.get("Shear modulus"),
+                 "must be positive");
+        if (!(kappa > 0.))
+          reject("Material/Bulk modulus",
+                 prm.get("Bulk modulus"),
+                 "must be positive");
+        lame.lambda = kappa - 2. * lame.mu / 3.;
+        // kappa far below mu can round lambda + 2 mu / 3 to 0.
+        if (!(lame.lambda + 2. * lame.mu / 3. > 0.))
+          reject("Material/Bulk modulus",
+                 prm.get("Bulk modulus"),
+                 "is too small against the shear modulus to be represented");
+      }
+    else if (constants == "Lame")
       {
         lame.mu     = get_finite(prm, "Material", "Shear modulus");
         lame.lambda = get_finite(prm, "Material", "Lame lambda");
@@ -649,6 +683,17 @@ namespace hyperelastic
                       "true",
                       Bool(),
                       "Print the Newton table of every load step.");
+    prm.declare_entry(
+      "Points",
+      "",
+      Anything(),
+      "Reference points at which the displacement is reported after every "
+      "converged load step, as 'x, y; x, y' in 2D or 'x, y, z; x, y, z' in "
+      "3D (for example '48, 60; 48, 52'). Each point adds the CSV columns "
+      "point<k>_ux, point<k>_uy (, point<k>_uz), k = 1, 2, ... in the order "
+      "given. A point on a vertex, edge or face shared by several cells gets "
+      "their average. A point outside the mesh is an input error. Empty: no "
+      "points.");
     prm.leave_subsection();
   }
 
@@ -664,6 +709,27 @@ namespace hyperelastic
       reject("Output/Directory", "", "must not be empty");
     if (base_name.empty() || base_name.find('/') != std::string::npos)
       reject("Output/Base name", base_name, "must be a non-empty file name");
+    const std::string points_text = prm.get("Points");
+    points.clear();
+    for (const auto &point : split_expressions(points_text))
+      {
+        std::vector<double> coordinates;
+        bool                ok = true;
+        for (const auto &c : dealii::Utilities::split_string_list(point, ','))
+          {
+            std::istringstream in(c);
+            double             x = 0.;
+            in >> x;
+            ok = ok && !in.fail() && std::isfinite(x) && (in >> std::ws).eof();
+            coordinates.push_back(x);
+          }
+        if (!ok || coordinates.size() < 2 || coordinates.size() > 3)
+          reject("Output/Points",
+                 points_text,
+                 "expected points 'x, y[, z]' separated by ';', got '" +
+                   point + "'");
+        points.push_back(coordinates);
+      }
     prm.leave_subsection();
   }
 

@@ -7,6 +7,7 @@
 
 #include <hyperelastic/error_handling.h>
 #include <hyperelastic/mesh.h>
+#include <hyperelastic/point_values.h>
 #include <hyperelastic/problem.h>
 #include <hyperelastic/rigid_body_modes.h>
 
@@ -51,6 +52,8 @@ namespace hyperelastic
       create_material<dim>(parameters.material.model, parameters.material.lame);
     boundary_conditions =
       std::make_unique<BoundaryConditions<dim>>(parameters.loading, mesh_ids);
+    if (load_editor)
+      load_editor(*boundary_conditions);
     if (boundary_conditions->dirichlet.empty())
       throw InputError("no Dirichlet condition is set (sections 'Dirichlet 1' "
                        "... 'Dirichlet " +
@@ -61,6 +64,12 @@ namespace hyperelastic
     dof_handler.distribute_dofs(fe);
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+    // 'Output/Points' outside the mesh: an input error now, not after the
+    // first load step.
+    (void)PointValues<dim>(output_points<dim>(parameters.output),
+                           dof_handler,
+                           mapping,
+                           comm);
 
     boundary_conditions->make_constraints(mapping,
                                           dof_handler,
@@ -411,6 +420,16 @@ namespace hyperelastic
         s.deformed_min[d] = Utilities::MPI::min(s.deformed_min[d], comm);
         s.deformed_max[d] = Utilities::MPI::max(s.deformed_max[d], comm);
       }
+
+    // Located again at every step (a few bounding-box tests per cell), so
+    // that Problem keeps no extra state.
+    if (!parameters.output.points.empty())
+      s.point_displacements =
+        PointValues<dim>(output_points<dim>(parameters.output),
+                         dof_handler,
+                         mapping,
+                         comm)
+          .evaluate(u_ghosted);
 
     scope.stop();
     if (parameters.output.write_vtu)

@@ -3,7 +3,7 @@
 // reactions, deformed bounding boxes and point displacements to 1e-10
 // relative. Scenes: the homogeneous bar (exact answer) and a
 // non-homogeneous clamped bar that is twisted, pulled, loaded by a body
-// force and by a traction, in 2D and 3D.
+// force and by a traction, in 2D and 3D, P1 and (twisted) P2.
 //
 // Usage: mpirun -np N rank_invariance
 #include <deal.II/base/mpi.h>
@@ -26,11 +26,16 @@ namespace
   constexpr double tolerance = 1e-10;
 
   std::string
-  scene(const int dim, const bool twisted, const std::string &base_name)
+  scene(const int          dim,
+        const bool         twisted,
+        const unsigned int degree,
+        const std::string &base_name)
   {
     const bool  three = dim == 3;
     std::string text =
-      subsection("Problem", entry("Dimension", std::to_string(dim))) +
+      subsection("Problem",
+                 entry("Dimension", std::to_string(dim)) +
+                   entry("Finite element degree", std::to_string(degree))) +
       subsection("Mesh",
                  entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
                    entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
@@ -167,20 +172,21 @@ namespace
   /// Returns {numbers compared, numbers that differ}.
   template <int dim>
   std::pair<unsigned int, unsigned int>
-  compare(const bool twisted, const bool print)
+  compare(const bool twisted, const unsigned int degree, const bool print)
   {
-    const std::string tag =
-      std::to_string(dim) + "d_" + (twisted ? "twisted" : "bar");
+    const std::string tag = std::to_string(dim) + "d_" +
+                            (twisted ? "twisted" : "bar") + "_P" +
+                            std::to_string(degree);
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     const Numbers parallel =
-      solve<dim>(scene(dim, twisted, tag + "_np" + std::to_string(n_ranks)),
+      solve<dim>(scene(dim, twisted, degree, tag + "_np" + std::to_string(n_ranks)),
                  MPI_COMM_WORLD);
     unsigned int failed = 0, checked = 0;
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
         const Numbers serial =
-          solve<dim>(scene(dim, twisted, tag + "_np1"), MPI_COMM_SELF);
+          solve<dim>(scene(dim, twisted, degree, tag + "_np1"), MPI_COMM_SELF);
         // Relative to the largest number of the same kind, so that values
         // that are zero by symmetry are judged against the problem's scale.
         double scale = 0.;
@@ -223,9 +229,11 @@ main(int argc, char *argv[])
   unsigned int failed = 0, n_checks = 0;
   const int    status = run_and_report(
     [&]() {
-      for (const bool twisted : {false, true})
+      // P1 homogeneous and twisted bars, and the twisted bars with P2.
+      for (const auto &[twisted, degree] :
+           {std::make_pair(false, 1u), std::make_pair(true, 1u), std::make_pair(true, 2u)})
         for (const auto &[checked, differ] :
-             {compare<2>(twisted, print), compare<3>(twisted, print)})
+             {compare<2>(twisted, degree, print), compare<3>(twisted, degree, print)})
           {
             n_checks += checked;
             failed += differ;

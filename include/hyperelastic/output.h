@@ -42,6 +42,8 @@ namespace hyperelastic
                            reactions;
     dealii::Tensor<1, dim> deformed_min; ///< bounding box of x = X + u
     dealii::Tensor<1, dim> deformed_max;
+    /// The displacement at each point of 'Output/Points', in their order.
+    std::vector<dealii::Tensor<1, dim>> point_displacements;
   };
 
   template <int dim>

@@ -168,6 +168,10 @@ namespace hyperelastic
     std::string base_name = "solution";
     bool        write_vtu = true;
     bool        verbose   = true;
+    /// Reference points at which the displacement is reported every load
+    /// step ("Points"): each 2 or 3 coordinates as written (the number is
+    /// checked against the dimension at setup).
+    std::vector<std::vector<double>> points;
 
     static void
     declare(ParameterHandler &prm);

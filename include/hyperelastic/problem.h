@@ -21,6 +21,7 @@
 #include <hyperelastic/output.h>
 #include <hyperelastic/parameters.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -38,6 +39,16 @@ namespace hyperelastic
     /// Runs all load steps. Throws InputError or ConvergenceFailure.
     void
     run();
+
+    /// Lets code change the scene's loads after they are parsed, before
+    /// run() uses them: for example a manufactured solution's body force
+    /// and boundary displacements, which no expression can write. Call
+    /// before run().
+    void
+    set_load_editor(std::function<void(BoundaryConditions<dim> &)> editor)
+    {
+      load_editor = std::move(editor);
+    }
 
     /// One entry per converged load step.
     const std::vector<StepSummary<dim>> &
@@ -137,6 +148,7 @@ namespace hyperelastic
 
     std::unique_ptr<Material<dim>>           material;
     std::unique_ptr<BoundaryConditions<dim>> boundary_conditions;
+    std::function<void(BoundaryConditions<dim> &)> load_editor;
     std::unique_ptr<ElasticityOperator<dim>> elasticity;
     std::unique_ptr<OutputWriter<dim>>       writer;
     LinearSolver                             linear_solver;
