@@ -13,6 +13,7 @@
 #include <hyperelastic/problem.h>
 
 #include "checker.h"
+#include "dimension_main.h"
 #include "nodal_error.h"
 #include "scene_text.h"
 
@@ -98,17 +99,10 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool print = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  const int  dim   = argc > 1 ? std::atoi(argv[1]) : 3;
-  Checker    checker(print);
-  const int  status = run_and_report(
-    [&]() {
-      if (dim == 2)
-        check<2>(checker);
-      else
-        check<3>(checker);
-    },
-    MPI_COMM_WORLD);
-  return checker.exit_code(status);
+  return run_checks_for_dimension(argc, argv, [](const int dim, Checker &checker, bool) {
+    if (dim == 2)
+      check<2>(checker);
+    else
+      check<3>(checker);
+  });
 }

@@ -42,6 +42,8 @@ namespace hyperelastic
   class DecoupledNeoHookean : public Material<dim>
   {
   public:
+    using Material<dim>::not_a_number_tensor;
+
     /// @p lame are the scene's constants; the bulk modulus kappa = lambda +
     /// 2 mu / 3 is derived from them.
     explicit DecoupledNeoHookean(const LameParameters &lame)
@@ -146,16 +148,6 @@ namespace hyperelastic
     {
       const double cube_root = std::cbrt(J);
       return 1. / (cube_root * cube_root);
-    }
-
-    static Tensor<2, dim>
-    not_a_number_tensor()
-    {
-      Tensor<2, dim> T;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          T[i][j] = std::numeric_limits<double>::quiet_NaN();
-      return T;
     }
   };
 } // namespace hyperelastic

@@ -6,6 +6,7 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -89,6 +90,18 @@ namespace hyperelastic
     }
 
   protected:
+    /// A tensor of NaNs: P (and each block of dP/dF) where a model is
+    /// undefined.
+    static Tensor<2, dim>
+    not_a_number_tensor()
+    {
+      Tensor<2, dim> T;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          T[i][j] = std::numeric_limits<double>::quiet_NaN();
+      return T;
+    }
+
     const LameParameters lame;
   };
 

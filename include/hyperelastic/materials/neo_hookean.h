@@ -17,6 +17,7 @@ namespace hyperelastic
   {
   public:
     using Material<dim>::Material;
+    using Material<dim>::not_a_number_tensor;
 
     std::string
     name() const override
@@ -78,17 +79,6 @@ namespace hyperelastic
     defined_for_inverted_elements() const override
     {
       return false;
-    }
-
-  private:
-    static Tensor<2, dim>
-    not_a_number_tensor()
-    {
-      Tensor<2, dim> T;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          T[i][j] = std::numeric_limits<double>::quiet_NaN();
-      return T;
     }
   };
 } // namespace hyperelastic
