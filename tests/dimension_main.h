@@ -24,8 +24,13 @@ namespace hyperelastic::testing
     const bool print = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     const int  dim   = argc > 1 ? std::atoi(argv[1]) : 3;
     Checker    checker(print);
-    const int  status =
-      run_and_report([&]() { checks(dim, checker, print); }, MPI_COMM_WORLD);
+    const int  status = run_and_report(
+      [&]() {
+        if (dim != 2 && dim != 3)
+          throw InputError("the first argument must be the dimension, 2 or 3");
+        checks(dim, checker, print);
+      },
+      MPI_COMM_WORLD);
     return checker.exit_code(status);
   }
 } // namespace hyperelastic::testing

@@ -34,7 +34,7 @@ namespace hyperelastic::testing
   {
     const double   c = std::cos(angle), s = std::sin(angle);
     Tensor<2, dim> R;
-    if (dim == 2)
+    if constexpr (dim == 2)
       {
         R[0][0] = R[1][1] = c;
         R[0][1]           = -s;

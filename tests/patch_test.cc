@@ -36,9 +36,11 @@ namespace
     std::string expressions;
     for (unsigned int i = 0; i < dim; ++i)
       {
-        expressions += (i > 0 ? "; " : "") + std::to_string(c[i]);
+        // Applied in two load steps: u = t (A X + c).
+        expressions += std::string(i > 0 ? "; " : "") + "t*(" + std::to_string(c[i]);
         for (unsigned int j = 0; j < dim; ++j)
           expressions += " + " + std::to_string(A[i][j]) + "*" + std::string(1, "xyz"[j]);
+        expressions += ")";
       }
     std::string text =
       subsection("Problem",

@@ -65,7 +65,9 @@ namespace
                         entry("Absolute residual tolerance", "1e-15") +
                         entry("Relative residual tolerance", "1e-14") +
                         entry("Update tolerance", "1e-13") +
-                        entry("Inexact Newton", "false")) +
+                        entry("Inexact Newton", "false") +
+                        // No projected fallback: every iteration exact.
+                        entry("Tangent", "exact")) +
            subsection("Linear solver", entry("Type", "direct")) +
            subsection("Output",
                       entry("Directory", "quadratic_convergence_output") +
