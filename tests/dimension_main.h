@@ -10,15 +10,29 @@
 #include "checker.h"
 
 #include <cstdlib>
-#include <functional>
+#include <string>
+#include <vector>
 
 namespace hyperelastic::testing
 {
-  /// @p checks(dim, checker, print) runs the checks; DIM defaults to 3.
-  inline int
-  run_checks_for_dimension(int                                             argc,
-                           char                                          **argv,
-                           const std::function<void(int, Checker &, bool)> &checks)
+  /// The models whose energy is rotation invariant (all but linear
+  /// elasticity).
+  inline const std::vector<std::string> &
+  nonlinear_models()
+  {
+    static const std::vector<std::string> names = {"St. Venant-Kirchhoff",
+                                                   "corotational",
+                                                   "neo-Hookean",
+                                                   "stable neo-Hookean",
+                                                   "decoupled neo-Hookean"};
+    return names;
+  }
+
+  /// Runs @p check_2d or @p check_3d (each called as (checker, print)) by
+  /// the first argument; DIM defaults to 3.
+  template <typename Check2D, typename Check3D>
+  int
+  run_checks_for_dimension(int argc, char **argv, Check2D &&check_2d, Check3D &&check_3d)
   {
     dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
     const bool print = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
@@ -28,7 +42,10 @@ namespace hyperelastic::testing
       [&]() {
         if (dim != 2 && dim != 3)
           throw InputError("the first argument must be the dimension, 2 or 3");
-        checks(dim, checker, print);
+        if (dim == 2)
+          check_2d(checker, print);
+        else
+          check_3d(checker, print);
       },
       MPI_COMM_WORLD);
     return checker.exit_code(status);

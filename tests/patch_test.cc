@@ -65,7 +65,7 @@ namespace
 
   template <int dim>
   void
-  check(Checker &checker)
+  check(Checker &checker, bool)
   {
     for (const std::string model : {"linear elastic",
                                     "decoupled neo-Hookean",
@@ -101,10 +101,5 @@ namespace
 int
 main(int argc, char **argv)
 {
-  return run_checks_for_dimension(argc, argv, [](const int dim, Checker &checker, bool) {
-    if (dim == 2)
-      check<2>(checker);
-    else
-      check<3>(checker);
-  });
+  return run_checks_for_dimension(argc, argv, check<2>, check<3>);
 }

@@ -81,14 +81,9 @@ namespace
 
   template <int dim>
   void
-  check(Checker &checker)
+  check(Checker &checker, bool)
   {
-    for (const std::string model :
-         {"St. Venant-Kirchhoff",
-          "corotational",
-          "neo-Hookean",
-          "stable neo-Hookean",
-          "decoupled neo-Hookean"})
+    for (const std::string &model : nonlinear_models())
       {
         const State       one = solve<dim>(model, 1), ten = solve<dim>(model, 10);
         const std::string tag = std::to_string(dim) + "D " + model + ": ";
@@ -116,10 +111,5 @@ namespace
 int
 main(int argc, char **argv)
 {
-  return run_checks_for_dimension(argc, argv, [](const int dim, Checker &checker, bool) {
-    if (dim == 2)
-      check<2>(checker);
-    else
-      check<3>(checker);
-  });
+  return run_checks_for_dimension(argc, argv, check<2>, check<3>);
 }

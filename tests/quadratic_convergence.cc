@@ -78,12 +78,7 @@ namespace
   void
   check(Checker &checker, const bool print)
   {
-    for (const std::string model :
-         {"St. Venant-Kirchhoff",
-          "corotational",
-          "neo-Hookean",
-          "stable neo-Hookean",
-          "decoupled neo-Hookean"})
+    for (const std::string &model : nonlinear_models())
       for (const unsigned int degree : {1u, 2u})
         {
           Parameters parameters;
@@ -135,10 +130,5 @@ namespace
 int
 main(int argc, char **argv)
 {
-  return run_checks_for_dimension(argc, argv, [](const int dim, Checker &checker, const bool print) {
-    if (dim == 2)
-      check<2>(checker, print);
-    else
-      check<3>(checker, print);
-  });
+  return run_checks_for_dimension(argc, argv, check<2>, check<3>);
 }
