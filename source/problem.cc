@@ -7,7 +7,6 @@
 
 #include <hyperelastic/error_handling.h>
 #include <hyperelastic/mesh.h>
-#include <hyperelastic/point_values.h>
 #include <hyperelastic/problem.h>
 #include <hyperelastic/rigid_body_modes.h>
 
@@ -64,12 +63,14 @@ namespace hyperelastic
     dof_handler.distribute_dofs(fe);
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
-    // 'Output/Points' outside the mesh: an input error now, not after the
-    // first load step.
-    (void)PointValues<dim>(output_points<dim>(parameters.output),
-                           dof_handler,
-                           mapping,
-                           comm);
+    // Located once; a point outside the mesh is an input error now, not
+    // after the first load step.
+    if (!parameters.output.points.empty())
+      point_values =
+        std::make_unique<PointValues<dim>>(output_points<dim>(parameters.output),
+                                           dof_handler,
+                                           mapping,
+                                           comm);
 
     boundary_conditions->make_constraints(mapping,
                                           dof_handler,
@@ -421,15 +422,8 @@ namespace hyperelastic
         s.deformed_max[d] = Utilities::MPI::max(s.deformed_max[d], comm);
       }
 
-    // Located again at every step (a few bounding-box tests per cell), so
-    // that Problem keeps no extra state.
-    if (!parameters.output.points.empty())
-      s.point_displacements =
-        PointValues<dim>(output_points<dim>(parameters.output),
-                         dof_handler,
-                         mapping,
-                         comm)
-          .evaluate(u_ghosted);
+    if (point_values)
+      s.point_displacements = point_values->evaluate(u_ghosted);
 
     scope.stop();
     if (parameters.output.write_vtu)

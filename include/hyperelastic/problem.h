@@ -20,6 +20,7 @@
 #include <hyperelastic/newton_solver.h>
 #include <hyperelastic/output.h>
 #include <hyperelastic/parameters.h>
+#include <hyperelastic/point_values.h>
 
 #include <functional>
 #include <map>
@@ -151,6 +152,8 @@ namespace hyperelastic
     std::function<void(BoundaryConditions<dim> &)> load_editor;
     std::unique_ptr<ElasticityOperator<dim>> elasticity;
     std::unique_ptr<OutputWriter<dim>>       writer;
+    /// The points of 'Output/Points', located once (null if there are none).
+    std::unique_ptr<PointValues<dim>> point_values;
     LinearSolver                             linear_solver;
     NewtonSolver                             newton;
 
