@@ -8,23 +8,14 @@
 //
 // Usage: mpirun -np N p1_kernel
 #include <deal.II/base/mpi.h>
-#include <deal.II/distributed/fully_distributed_tria.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_simplex_p.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_fe.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
 
 #include <hyperelastic/boundary_conditions.h>
 #include <hyperelastic/elasticity_operator.h>
 #include <hyperelastic/error_handling.h>
-#include <hyperelastic/mesh.h>
 
-#include "random_vector.h"
-
+#include "box_discretisation.h"
 #include "checker.h"
+#include "random_vector.h"
 
 
 using namespace hyperelastic;
@@ -44,23 +35,11 @@ namespace
   void
   compare(const std::string &model, const bool projected, Checker &check)
   {
-    const MPI_Comm comm = MPI_COMM_WORLD;
-    MeshParameters mesh;
-    mesh.lower_corner    = std::vector<double>(dim, 0.);
-    mesh.upper_corner    = std::vector<double>(dim, 1.);
-    mesh.upper_corner[0] = 3.;
-    mesh.subdivisions    = std::vector<unsigned int>(dim, 3);
-    mesh.subdivisions[0] = 7;
-    parallel::fullydistributed::Triangulation<dim> tria(comm);
-    const auto ids = create_mesh(mesh, tria);
-
-    const FESystem<dim>  fe(FE_SimplexP<dim>(1), dim);
-    const MappingFE<dim> mapping(FE_SimplexP<dim>(1));
-    DoFHandler<dim>      dof_handler(tria);
-    dof_handler.distribute_dofs(fe);
-    const IndexSet owned = dof_handler.locally_owned_dofs();
-    IndexSet       relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    const MPI_Comm               comm = MPI_COMM_WORLD;
+    const BoxDiscretisation<dim> box(3., 7, 3, 1, comm);
+    const IndexSet              &owned = box.owned, &relevant = box.relevant;
+    const DoFHandler<dim>       &dof_handler = box.dof_handler;
+    const MappingFE<dim>        &mapping     = box.mapping;
 
     LameParameters lame;
     lame.mu             = 1.;
@@ -81,19 +60,16 @@ namespace
     loading.tractions.push_back(
       {2, std::vector<std::string>(dim, "0.3*t*x"), "Traction 1"});
     loading.body_force = std::vector<std::string>(dim, "-0.2*t");
-    const BoundaryConditions<dim> bc(loading, ids);
+    const BoundaryConditions<dim> bc(loading, box.boundary_ids);
     const ElasticityOperator<dim> fast(dof_handler, mapping, *material, bc);
     const ElasticityOperator<dim> generic(
       dof_handler, mapping, *material, bc, false);
     check.is_true(std::to_string(dim) + "D: the kernel is in use",
                   fast.uses_p1_kernel() && !generic.uses_p1_kernel());
 
-    DynamicSparsityPattern dsp(relevant);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp);
-    SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
     MatrixType K_fast, K_generic;
-    K_fast.reinit(owned, owned, dsp, comm);
-    K_generic.reinit(owned, owned, dsp, comm);
+    box.reinit_matrix(K_fast);
+    box.reinit_matrix(K_generic);
 
     VectorType u(owned, comm), u_ghosted(owned, relevant, comm);
     fill_random(u, 0.05, 1);

@@ -6,24 +6,16 @@
 //
 // Usage: mpirun -np N tangent_fd
 #include <deal.II/base/mpi.h>
-#include <deal.II/distributed/fully_distributed_tria.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_simplex_p.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_fe.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
 
 #include <hyperelastic/boundary_conditions.h>
 #include <hyperelastic/elasticity_operator.h>
 #include <hyperelastic/error_handling.h>
-#include <hyperelastic/mesh.h>
 
+#include "box_discretisation.h"
+#include "checker.h"
 #include "random_vector.h"
 
-#include <iomanip>
-#include <iostream>
+#include <string>
 
 using namespace hyperelastic;
 using namespace hyperelastic::testing;
@@ -35,22 +27,9 @@ namespace
   double
   worst_error(const std::string &model, const unsigned int degree)
   {
-    const MPI_Comm comm = MPI_COMM_WORLD;
-    MeshParameters mesh;
-    mesh.lower_corner    = std::vector<double>(dim, 0.);
-    mesh.upper_corner    = std::vector<double>(dim, 1.);
-    mesh.upper_corner[0] = 2.;
-    mesh.subdivisions    = std::vector<unsigned int>(dim, 2);
-    parallel::fullydistributed::Triangulation<dim> tria(comm);
-    const auto ids = create_mesh(mesh, tria);
-
-    const FESystem<dim>  fe(FE_SimplexP<dim>(degree), dim);
-    const MappingFE<dim> mapping(FE_SimplexP<dim>(1));
-    DoFHandler<dim>      dof_handler(tria);
-    dof_handler.distribute_dofs(fe);
-    const IndexSet owned = dof_handler.locally_owned_dofs();
-    IndexSet       relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    const MPI_Comm               comm = MPI_COMM_WORLD;
+    const BoxDiscretisation<dim> box(2., 2, 2, degree, comm);
+    const IndexSet              &owned = box.owned, &relevant = box.relevant;
 
     LameParameters lame;
     lame.mu             = 1.;
@@ -60,14 +39,11 @@ namespace
     LoadingParameters loading;
     loading.tractions.push_back(
       {1, std::vector<std::string>(dim, "0.3*t"), "Traction 1"});
-    const BoundaryConditions<dim> bc(loading, ids);
-    const ElasticityOperator<dim> op(dof_handler, mapping, *material, bc);
+    const BoundaryConditions<dim> bc(loading, box.boundary_ids);
+    const ElasticityOperator<dim> op(box.dof_handler, box.mapping, *material, bc);
 
-    DynamicSparsityPattern dsp(relevant);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp);
-    SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
     MatrixType K;
-    K.reinit(owned, owned, dsp, comm);
+    box.reinit_matrix(K);
     AffineConstraints<double> none(relevant);
     none.close();
 
@@ -106,9 +82,8 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool   print  = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  unsigned int passed = 0, failed = 0;
-  const int    status = run_and_report(
+  Checker   check(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+  const int status = run_and_report(
     [&]() {
       for (const std::string model : {"St. Venant-Kirchhoff",
                                       "corotational",
@@ -116,20 +91,12 @@ main(int argc, char *argv[])
                                       "decoupled neo-Hookean"})
         for (const unsigned int degree : {1u, 2u})
           for (const int dim : {2, 3})
-            {
-              const double error = dim == 2 ? worst_error<2>(model, degree)
-                                               : worst_error<3>(model, degree);
-              const bool   ok    = error < 1e-6;
-              (ok ? passed : failed)++;
-              if (print)
-                std::cout << "  " << std::left << std::setw(22) << model << " P"
-                          << degree << ' ' << dim << "D  " << std::right
-                          << std::scientific << std::setprecision(2) << error
-                          << " < 1e-6" << (ok ? "  PASS" : "  FAIL") << '\n';
-            }
+            check.at_most(model + " P" + std::to_string(degree) + " " +
+                            std::to_string(dim) + "D",
+                          dim == 2 ? worst_error<2>(model, degree) :
+                                     worst_error<3>(model, degree),
+                          1e-6);
     },
     MPI_COMM_WORLD);
-  if (print)
-    std::cout << passed << " passed, " << failed << " failed" << std::endl;
-  return (status != 0 || failed > 0 || passed == 0) ? 1 : 0;
+  return check.exit_code(status);
 }
