@@ -83,13 +83,29 @@ def richardson_twist_errors(rows):
             r["error"] = f"{abs(float(r['energy']) - limit) / abs(limit):.6g}"
 
 
-def plot(rows):
+def pyplot():
     try:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
         sys.exit("plotting needs matplotlib: apt-get install python3-matplotlib")
+    return plt
+
+
+def finish(fig, ax, xlabel, ylabel, title, file_name):
+    """Labels, grid and legend; saves the figure next to this script."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, file_name), dpi=110)
+
+
+def plot(rows):
+    plt = pyplot()
 
     def series(scene, ranks):
         s = [r for r in rows if r["scene"] == scene and int(r["ranks"]) == ranks]
@@ -103,13 +119,7 @@ def plot(rows):
                 ax.loglog([float(r["error"]) for r in s], [float(r["t_total"]) for r in s],
                           marker=marker, linestyle="-" if ranks == 1 else "--",
                           label=f"{scene}, {ranks} rank{'s' if ranks > 1 else ''}")
-    ax.set_xlabel("relative error (bar: max nodal displacement; twist: energy)")
-    ax.set_ylabel("wall time [s]")
-    ax.set_title("Work-precision, P1 neo-Hookean, 3D")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "work_precision.png"), dpi=110)
+    finish(fig, ax, "relative error (bar: max nodal displacement; twist: energy)", "wall time [s]", "Work-precision, P1 neo-Hookean, 3D", "work_precision.png")
 
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for scene, marker in (("bar", "o"), ("twist", "s")):
@@ -120,13 +130,7 @@ def plot(rows):
                           [1e6 * float(r["t_total"]) / int(r["dofs"]) for r in s],
                           marker=marker, linestyle="-" if ranks == 1 else "--",
                           label=f"{scene}, {ranks} rank{'s' if ranks > 1 else ''}")
-    ax.set_xlabel("unknowns")
-    ax.set_ylabel("wall time per unknown [µs]")
-    ax.set_title("Time per unknown (whole run)")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "time_per_dof.png"), dpi=110)
+    finish(fig, ax, "unknowns", "wall time per unknown [µs]", "Time per unknown (whole run)", "time_per_dof.png")
 
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for scene, marker in (("bar", "o"), ("twist", "s")):
@@ -138,21 +142,13 @@ def plot(rows):
                         [float(one[n]["t_total"]) / float(two[n]["t_total"]) for n in common],
                         marker=marker, label=scene)
     ax.axhline(1.7, color="gray", linestyle=":", label="target 1.7")
-    ax.set_xlabel("unknowns")
-    ax.set_ylabel("speed-up, 2 ranks over 1")
-    ax.set_title("1 versus 2 MPI ranks")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "ranks.png"), dpi=110)
+    finish(fig, ax, "unknowns", "speed-up, 2 ranks over 1", "1 versus 2 MPI ranks", "ranks.png")
     print("figures: benchmarks/work_precision.png, time_per_dof.png, ranks.png")
 
 
 def plot_degrees(rows):
     """Wall time against the L2 and H1 errors of the manufactured solution."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for degree, marker in ((1, "o"), (2, "s")):
@@ -160,13 +156,7 @@ def plot_degrees(rows):
         for column, style, norm in (("error", "-", "L2"), ("error_h1", "--", "H1")):
             ax.loglog([float(r[column]) for r in s], [float(r["t_total"]) for r in s],
                       marker=marker, linestyle=style, label=f"P{degree}, {norm} error")
-    ax.set_xlabel("relative error of the displacement")
-    ax.set_ylabel("wall time [s] (2 ranks)")
-    ax.set_title("P1 against P2: manufactured solution, neo-Hookean, 3D")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "work_precision_degree.png"), dpi=110)
+    finish(fig, ax, "relative error of the displacement", "wall time [s] (2 ranks)", "P1 against P2: manufactured solution, neo-Hookean, 3D", "work_precision_degree.png")
     print("figure: benchmarks/work_precision_degree.png")
 
 
