@@ -29,11 +29,7 @@ namespace
   scene(const int dim, const std::string &model, const unsigned int steps)
   {
     const bool three = dim == 3;
-    return subsection("Problem", entry("Dimension", std::to_string(dim))) +
-           subsection("Mesh",
-                      entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                        entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
-                        entry("Subdivisions", three ? "6, 2, 2" : "12, 4")) +
+    return small_bar(dim, 1) +
            subsection("Material",
                       entry("Model", model) + entry("Young's modulus", "1") +
                         entry("Poisson's ratio", "0.3")) +

@@ -33,13 +33,7 @@ namespace
   {
     const bool  three = dim == 3;
     std::string text =
-      subsection("Problem",
-                 entry("Dimension", std::to_string(dim)) +
-                   entry("Finite element degree", std::to_string(degree))) +
-      subsection("Mesh",
-                 entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                   entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
-                   entry("Subdivisions", three ? "6, 2, 2" : "12, 4")) +
+      small_bar(dim, degree) +
       subsection("Material",
                  entry("Model", three ? "neo-Hookean" : "corotational") +
                    entry("Young's modulus", "1") +

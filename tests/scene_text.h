@@ -30,6 +30,21 @@ namespace hyperelastic::testing
                         entry("Displacement", value));
   }
 
+  /// Problem and Mesh sections of the bar [0,3] x [0,1] (x [0,1]) of
+  /// 12 x 4 (2D) or 6 x 2 x 2 (3D) boxes, with elements of @p degree.
+  inline std::string
+  small_bar(const int dim, const unsigned int degree)
+  {
+    const bool three = dim == 3;
+    return subsection("Problem",
+                      entry("Dimension", std::to_string(dim)) +
+                        entry("Finite element degree", std::to_string(degree))) +
+           subsection("Mesh",
+                      entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
+                        entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
+                        entry("Subdivisions", three ? "6, 2, 2" : "12, 4"));
+  }
+
   /// Tight solver settings so that results are limited by round-off.
   inline std::string
   tight_solver(const std::string &linear_solver)
