@@ -22,7 +22,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
 #include <deal.II/base/quadrature_lib.h>

@@ -1,7 +1,7 @@
 // hyperelastic: command line handling; everything else lives in the library.
 #include <deal.II/base/mpi.h>
 
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/parameters.h>
 #include <hyperelastic/problem.h>
 

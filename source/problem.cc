@@ -5,10 +5,10 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
-#include <hyperelastic/error_handling.h>
-#include <hyperelastic/mesh.h>
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/mesh/mesh.h>
 #include <hyperelastic/problem.h>
-#include <hyperelastic/rigid_body_modes.h>
+#include <hyperelastic/solvers/rigid_body_modes.h>
 
 #include <iomanip>
 

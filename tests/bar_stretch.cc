@@ -15,7 +15,7 @@
 //   without it a generated box is used.
 #include <deal.II/base/mpi.h>
 
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
 #include "analytic_bar.h"

@@ -13,8 +13,8 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
-#include <hyperelastic/elasticity_operator.h>
-#include <hyperelastic/mesh.h>
+#include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/mesh/mesh.h>
 
 #include <set>
 #include <vector>

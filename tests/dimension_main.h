@@ -5,7 +5,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/base/error_handling.h>
 
 #include "checker.h"
 

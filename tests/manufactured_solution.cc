@@ -14,7 +14,7 @@
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
 #include "checker.h"

@@ -9,7 +9,7 @@
 // Usage: mpirun -np N patch_test DIM
 #include <deal.II/base/mpi.h>
 
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
 #include "checker.h"

@@ -9,7 +9,7 @@
 // first load step.
 #include <deal.II/base/mpi.h>
 
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
 #include "checker.h"

@@ -12,7 +12,7 @@
 // Usage: mpirun -np N quadratic_convergence DIM
 #include <deal.II/base/mpi.h>
 
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
 #include "checker.h"

@@ -8,7 +8,7 @@
 // Usage: mpirun -np N rank_invariance
 #include <deal.II/base/mpi.h>
 
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
 #include "scene_text.h"

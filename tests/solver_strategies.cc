@@ -10,7 +10,7 @@
 // Usage: mpirun -np N solver_strategies
 #include <deal.II/base/mpi.h>
 
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
 #include "checker.h"

@@ -17,7 +17,7 @@
 //   collective       an error on one MPI rank only reaches every rank
 #include <deal.II/base/mpi.h>
 
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
 #include "analytic_bar.h"

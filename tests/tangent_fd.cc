@@ -7,9 +7,9 @@
 // Usage: mpirun -np N tangent_fd
 #include <deal.II/base/mpi.h>
 
-#include <hyperelastic/boundary_conditions.h>
-#include <hyperelastic/elasticity_operator.h>
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/loads/boundary_conditions.h>
+#include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/base/error_handling.h>
 
 #include "box_discretisation.h"
 #include "checker.h"

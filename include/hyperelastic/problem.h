@@ -12,15 +12,15 @@
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/lac/affine_constraints.h>
 
-#include <hyperelastic/boundary_conditions.h>
-#include <hyperelastic/elasticity_operator.h>
-#include <hyperelastic/linear_solver.h>
-#include <hyperelastic/load_stepping.h>
+#include <hyperelastic/loads/boundary_conditions.h>
+#include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/solvers/linear_solver.h>
+#include <hyperelastic/solvers/load_stepping.h>
 #include <hyperelastic/materials/material.h>
-#include <hyperelastic/newton_solver.h>
-#include <hyperelastic/output.h>
+#include <hyperelastic/solvers/newton_solver.h>
+#include <hyperelastic/output/output.h>
 #include <hyperelastic/parameters.h>
-#include <hyperelastic/point_values.h>
+#include <hyperelastic/output/point_values.h>
 
 #include <functional>
 #include <map>

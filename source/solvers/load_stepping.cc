@@ -1,6 +1,6 @@
 // Load-step control with cut-back on failure and growth after easy steps.
-#include <hyperelastic/error_handling.h>
-#include <hyperelastic/load_stepping.h>
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/solvers/load_stepping.h>
 
 #include <algorithm>
 #include <sstream>

@@ -6,8 +6,8 @@
 #include <deal.II/fe/fe_values_extractors.h>
 #include <deal.II/lac/full_matrix.h>
 
-#include <hyperelastic/elasticity_operator.h>
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/materials/tangent_projection.h>
 
 #include <cmath>

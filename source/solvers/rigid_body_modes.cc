@@ -4,7 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 
-#include <hyperelastic/rigid_body_modes.h>
+#include <hyperelastic/solvers/rigid_body_modes.h>
 
 namespace hyperelastic
 {

@@ -8,7 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <hyperelastic/parameters.h>
+#include <hyperelastic/solvers/linear_solver_parameters.h>
 
 #include <memory>
 #include <vector>

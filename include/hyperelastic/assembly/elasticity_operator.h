@@ -15,9 +15,9 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
-#include <hyperelastic/boundary_conditions.h>
+#include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/materials/material.h>
-#include <hyperelastic/p1_assembler.h>
+#include <hyperelastic/assembly/p1_assembler.h>
 
 #include <limits>
 #include <memory>

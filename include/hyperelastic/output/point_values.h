@@ -10,7 +10,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <hyperelastic/parameters.h>
+#include <hyperelastic/output/output_parameters.h>
 
 #include <mpi.h>
 #include <vector>

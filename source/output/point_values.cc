@@ -3,8 +3,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe.h>
 
-#include <hyperelastic/error_handling.h>
-#include <hyperelastic/point_values.h>
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/output/point_values.h>
 
 #include <algorithm>
 #include <iomanip>

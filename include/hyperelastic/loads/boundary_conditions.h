@@ -11,7 +11,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <hyperelastic/parameters.h>
+#include <hyperelastic/loads/loading_parameters.h>
 
 #include <memory>
 #include <set>

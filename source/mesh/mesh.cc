@@ -7,8 +7,8 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/grid/tria_description.h>
 
-#include <hyperelastic/error_handling.h>
-#include <hyperelastic/mesh.h>
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/mesh/mesh.h>
 
 #include <algorithm>
 #include <array>

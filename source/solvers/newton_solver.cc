@@ -1,7 +1,7 @@
 // Newton iteration with a backtracking line search on the total potential
 // energy, residual and update tests, and a printed table.
-#include <hyperelastic/error_handling.h>
-#include <hyperelastic/newton_solver.h>
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/solvers/newton_solver.h>
 
 #include <algorithm>
 #include <cmath>

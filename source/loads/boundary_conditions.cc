@@ -3,8 +3,8 @@
 #include <deal.II/base/numbers.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hyperelastic/boundary_conditions.h>
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/loads/boundary_conditions.h>
+#include <hyperelastic/base/error_handling.h>
 
 #include <cmath>
 #include <iostream>

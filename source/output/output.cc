@@ -4,8 +4,8 @@
 #include <deal.II/numerics/data_component_interpretation.h>
 #include <deal.II/numerics/data_out.h>
 
-#include <hyperelastic/error_handling.h>
-#include <hyperelastic/output.h>
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/output/output.h>
 
 #include <filesystem>
 #include <iomanip>

@@ -6,9 +6,9 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe.h>
 
-#include <hyperelastic/error_handling.h>
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/materials/tangent_projection.h>
-#include <hyperelastic/p1_assembler.h>
+#include <hyperelastic/assembly/p1_assembler.h>
 
 #include <Epetra_CrsMatrix.h>
 

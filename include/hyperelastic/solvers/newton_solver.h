@@ -5,7 +5,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
-#include <hyperelastic/parameters.h>
+#include <hyperelastic/solvers/newton_parameters.h>
 
 #include <limits>
 #include <string>

@@ -9,9 +9,9 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <hyperelastic/elasticity_operator.h>
-#include <hyperelastic/newton_solver.h>
-#include <hyperelastic/parameters.h>
+#include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/solvers/newton_solver.h>
+#include <hyperelastic/output/output_parameters.h>
 
 #include <fstream>
 #include <string>

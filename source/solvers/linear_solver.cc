@@ -4,8 +4,8 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
-#include <hyperelastic/error_handling.h>
-#include <hyperelastic/linear_solver.h>
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/solvers/linear_solver.h>
 
 #include <Teuchos_ParameterList.hpp>
 

@@ -7,7 +7,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
 
-#include <hyperelastic/parameters.h>
+#include <hyperelastic/mesh/mesh_parameters.h>
 
 #include <set>
 

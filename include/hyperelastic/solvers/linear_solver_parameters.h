@@ -1,0 +1,38 @@
+// The scene's Linear solver subsection: CG with AMG or a direct solver.
+// Declared with pattern, default and documentation; parsed with the values
+// checked (an invalid value is an InputError naming the entry).
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace hyperelastic
+{
+  using dealii::ParameterHandler;
+
+  enum class LinearSolverType
+  {
+    cg_amg,
+    direct
+  };
+
+  struct LinearSolverParameters
+  {
+    LinearSolverType type                  = LinearSolverType::cg_amg;
+    double           relative_tolerance    = 1e-8;
+    unsigned int     max_iterations        = 1000;
+    std::string      direct_solver         = "Amesos_Klu";
+    double           aggregation_threshold = 1e-4;
+    unsigned int     smoother_sweeps       = 2;
+    /// The AMG hierarchy is rebuilt once CG needs more than this factor
+    /// times the iterations (per decade of residual reduction) of the first
+    /// solve with the current hierarchy; 0: rebuilt for every solve.
+    double amg_rebuild_growth = 1.5;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
+  };
+} // namespace hyperelastic

@@ -1,0 +1,40 @@
+// The scene's Newton subsection: tolerances, line search, tangent, inexact Newton.
+// Declared with pattern, default and documentation; parsed with the values
+// checked (an invalid value is an InputError naming the entry).
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace hyperelastic
+{
+  using dealii::ParameterHandler;
+
+  /// Which tangent Newton uses.
+  enum class NewtonTangent
+  {
+    exact,               ///< full Newton
+    projected,           ///< dP/dF projected to semi-definite everywhere
+    exact_then_projected ///< full Newton; projected where its step fails
+  };
+
+  struct NewtonParameters
+  {
+    unsigned int  max_iterations              = 20;
+    double        absolute_residual_tolerance = 0.;
+    double        relative_residual_tolerance = 1e-10;
+    double        update_tolerance            = 1e-8;
+    bool          line_search                 = true;
+    double        armijo_constant             = 1e-4;
+    double        minimum_step_length         = 1e-4;
+    NewtonTangent tangent = NewtonTangent::exact_then_projected;
+    /// Inexact Newton: Krylov tolerances from the Eisenstat-Walker forcing
+    /// terms (choice 2), at most max_forcing.
+    bool   inexact     = true;
+    double max_forcing = 0.1;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
+  };
+} // namespace hyperelastic

@@ -1,0 +1,43 @@
+// Helpers shared by the parameter subsections.
+#include <deal.II/base/utilities.h>
+
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/base/parameter_tools.h>
+
+#include <cmath>
+
+namespace hyperelastic
+{
+  [[noreturn]] void
+  reject(const std::string &entry,
+         const std::string &value,
+         const std::string &why)
+  {
+    throw InputError("scene entry '" + entry + "' = '" + value + "': " + why);
+  }
+
+  double
+  get_finite(dealii::ParameterHandler &prm,
+             const std::string &section,
+             const std::string &name)
+  {
+    const double v = prm.get_double(name);
+    if (!std::isfinite(v))
+      reject(section + "/" + name, prm.get(name), "must be a finite number");
+    return v;
+  }
+
+  std::vector<std::string>
+  split_expressions(const std::string &text)
+  {
+    if (dealii::Utilities::trim(text).empty())
+      return {};
+    return dealii::Utilities::split_string_list(text, ';');
+  }
+
+  unsigned int
+  component_index(const std::string &name)
+  {
+    return name == "x" ? 0 : (name == "y" ? 1 : 2);
+  }
+} // namespace hyperelastic

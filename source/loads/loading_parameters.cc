@@ -1,0 +1,180 @@
+// The scene's Loading subsection and its Dirichlet and Traction subsections.: declaration, documentation and validation of its entries.
+#include <deal.II/base/utilities.h>
+
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/loads/loading_parameters.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hyperelastic
+{
+  using dealii::Patterns::Anything;
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::List;
+  using dealii::Patterns::MultipleSelection;
+  using dealii::Patterns::Selection;
+
+  void
+  LoadingParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    prm.declare_entry("Number of load steps",
+                      "10",
+                      Integer(1),
+                      "The load factor t goes from 0 to 1 in this many equal "
+                      "steps (smaller ones where Newton needs them: see "
+                      "'Load stepping'); every expression below may use t.");
+    prm.declare_entry("Body force",
+                      "",
+                      Anything(),
+                      "Force per unit reference volume: dim expressions of "
+                      "x, y, (z,) t separated by ';' (for example '0; 0; "
+                      "-0.1*t'). Empty: no body force.");
+    prm.declare_entry("Constants",
+                      "",
+                      Anything(),
+                      "Named constants usable in every expression, as "
+                      "'name = value' pairs separated by ',' (for example "
+                      "'L = 10, angle = 1.5708'). pi is always defined.");
+    prm.leave_subsection();
+
+    for (unsigned int i = 1; i <= max_dirichlet; ++i)
+      {
+        prm.enter_subsection("Dirichlet " + std::to_string(i));
+        prm.declare_entry("Boundary id",
+                          "-1",
+                          Integer(-1),
+                          "Boundary id on which the displacement is "
+                          "prescribed; -1 leaves this slot unused.");
+        prm.declare_entry("Components",
+                          "x, y, z",
+                          MultipleSelection("x|y|z"),
+                          "Displacement components that are prescribed; the "
+                          "others stay free (so 'x' on a face x = const is a "
+                          "symmetry roller).");
+        prm.declare_entry("Displacement",
+                          "0; 0; 0",
+                          Anything(),
+                          "One expression of x, y, (z,) t per listed "
+                          "component, separated by ';': the displacement of "
+                          "the reference point (x, y, z) at load factor t.");
+        prm.leave_subsection();
+      }
+    for (unsigned int i = 1; i <= max_tractions; ++i)
+      {
+        prm.enter_subsection("Traction " + std::to_string(i));
+        prm.declare_entry("Boundary id",
+                          "-1",
+                          Integer(-1),
+                          "Boundary id loaded by this traction; -1 leaves this "
+                          "slot unused.");
+        prm.declare_entry("Traction",
+                          "0; 0; 0",
+                          Anything(),
+                          "Force per unit reference area (a nominal, "
+                          "dead-load traction): dim expressions of x, y, (z,) "
+                          "t separated by ';'.");
+        prm.leave_subsection();
+      }
+  }
+
+  void
+  LoadingParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    n_load_steps                     = prm.get_integer("Number of load steps");
+    body_force                       = split_expressions(prm.get("Body force"));
+    const std::string constants_text = prm.get("Constants");
+    prm.leave_subsection();
+
+    for (const auto &pair :
+         dealii::Utilities::split_string_list(constants_text, ','))
+      {
+        const auto        eq = pair.find('=');
+        const std::string name =
+          eq == std::string::npos ? ""
+                                  : dealii::Utilities::trim(pair.substr(0, eq));
+        double             value = 0;
+        std::istringstream value_stream(
+          eq == std::string::npos ? "" : pair.substr(eq + 1));
+        value_stream >> value;
+        if (name.empty() || value_stream.fail() || !std::isfinite(value) ||
+            !(value_stream >> std::ws).eof())
+          reject("Loading/Constants",
+                 constants_text,
+                 "expected 'name = number' pairs separated by ',', got '" +
+                   pair + "'");
+        const bool identifier =
+          (std::isalpha(static_cast<unsigned char>(name[0])) ||
+           name[0] == '_') &&
+          std::all_of(name.begin(), name.end(), [](const char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+          });
+        if (!identifier || name == "x" || name == "y" || name == "z" ||
+            name == "t" || name == "pi")
+          reject("Loading/Constants",
+                 constants_text,
+                 "'" + name +
+                   "' cannot be a constant's name: use letters, digits and "
+                   "'_' (starting with a letter), other than x, y, z, t and "
+                   "pi");
+        constants[name] = value;
+      }
+
+    for (unsigned int i = 1; i <= max_dirichlet; ++i)
+      {
+        const std::string section = "Dirichlet " + std::to_string(i);
+        prm.enter_subsection(section);
+        const int id = prm.get_integer("Boundary id");
+        if (id >= 0)
+          {
+            DirichletCondition c;
+            c.boundary_id = id;
+            c.subsection  = section;
+            for (const auto &name :
+                 dealii::Utilities::split_string_list(prm.get("Components")))
+              {
+                if (std::count(c.components.begin(),
+                               c.components.end(),
+                               component_index(name)) > 0)
+                  reject(section + "/Components",
+                         prm.get("Components"),
+                         "component " + name + " is listed twice");
+                c.components.push_back(component_index(name));
+              }
+            c.expressions = split_expressions(prm.get("Displacement"));
+            if (c.components.empty())
+              reject(section + "/Components",
+                     prm.get("Components"),
+                     "list at least one of x, y, z");
+            if (c.expressions.size() != c.components.size())
+              reject(section + "/Displacement",
+                     prm.get("Displacement"),
+                     "needs one expression per listed component (" +
+                       std::to_string(c.components.size()) +
+                       "), separated by ';'");
+            dirichlet.push_back(c);
+          }
+        prm.leave_subsection();
+      }
+    for (unsigned int i = 1; i <= max_tractions; ++i)
+      {
+        const std::string section = "Traction " + std::to_string(i);
+        prm.enter_subsection(section);
+        const int id = prm.get_integer("Boundary id");
+        if (id >= 0)
+          {
+            TractionCondition c;
+            c.boundary_id = id;
+            c.subsection  = section;
+            c.expressions = split_expressions(prm.get("Traction"));
+            tractions.push_back(c);
+          }
+        prm.leave_subsection();
+      }
+  }
+} // namespace hyperelastic

@@ -1,0 +1,129 @@
+// The scene's Material subsection: declaration, documentation and validation of its entries.
+#include <deal.II/base/utilities.h>
+
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/materials/material_parameters.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hyperelastic
+{
+  using dealii::Patterns::Anything;
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::List;
+  using dealii::Patterns::MultipleSelection;
+  using dealii::Patterns::Selection;
+
+  void
+  MaterialParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    prm.declare_entry("Model",
+                      "neo-Hookean",
+                      Selection(material_model_names()),
+                      "Constitutive model: 'linear elastic' (small strain), "
+                      "'St. Venant-Kirchhoff', 'corotational' (ARAP when "
+                      "lambda = 0), 'neo-Hookean' (log barrier: undefined "
+                      "for inverted elements), 'stable neo-Hookean' (Smith, "
+                      "de Goes, Kim 2018; finite for inverted elements; the "
+                      "same small-strain E and nu) or 'decoupled neo-Hookean' "
+                      "(psi = kappa/4 (J^2 - 1 - 2 ln J) + mu/2 (J^(-2/3) I1 "
+                      "- 3), the model of the finite-strain literature, e.g. "
+                      "Cook's membrane; bulk modulus kappa = lambda + 2 mu / "
+                      "3; undefined for inverted elements). See README, "
+                      "'Choosing a model'.");
+    prm.declare_entry("Elastic constants",
+                      "Young's modulus and Poisson's ratio",
+                      Selection("Young's modulus and Poisson's ratio|Lame|"
+                                "shear and bulk modulus"),
+                      "Which pair of constants the scene gives: (E, nu), "
+                      "the Lame constants (mu, lambda), or the shear and "
+                      "bulk moduli (mu, kappa), converted to lambda = kappa "
+                      "- 2 mu / 3.");
+    prm.declare_entry(
+      "Young's modulus",
+      "1",
+      Double(),
+      "E > 0 (used with 'Young's modulus and Poisson's ratio').");
+    prm.declare_entry("Poisson's ratio",
+                      "0.3",
+                      Double(),
+                      "-1 < nu < 0.5 (used with 'Young's modulus and Poisson's "
+                      "ratio').");
+    prm.declare_entry("Shear modulus",
+                      "1",
+                      Double(),
+                      "Lame mu > 0 (used with 'Lame' and 'shear and bulk "
+                      "modulus').");
+    prm.declare_entry("Lame lambda",
+                      "1",
+                      Double(),
+                      "Lame lambda, with lambda + 2 mu / 3 > 0 (used with "
+                      "'Lame').");
+    prm.declare_entry("Bulk modulus",
+                      "1",
+                      Double(),
+                      "kappa > 0 (used with 'shear and bulk modulus'; "
+                      "lambda = kappa - 2 mu / 3).");
+    prm.leave_subsection();
+  }
+
+  void
+  MaterialParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    model                       = prm.get("Model");
+    const std::string constants = prm.get("Elastic constants");
+    if (constants == "shear and bulk modulus")
+      {
+        lame.mu            = get_finite(prm, "Material", "Shear modulus");
+        const double kappa = get_finite(prm, "Material", "Bulk modulus");
+        if (!(lame.mu > 0.))
+          reject("Material/Shear modulus",
+                 prm.get("Shear modulus"),
+                 "must be positive");
+        if (!(kappa > 0.))
+          reject("Material/Bulk modulus",
+                 prm.get("Bulk modulus"),
+                 "must be positive");
+        lame.lambda = kappa - 2. * lame.mu / 3.;
+        // kappa far below mu can round lambda + 2 mu / 3 to 0.
+        if (!(lame.lambda + 2. * lame.mu / 3. > 0.))
+          reject("Material/Bulk modulus",
+                 prm.get("Bulk modulus"),
+                 "is too small against the shear modulus to be represented");
+      }
+    else if (constants == "Lame")
+      {
+        lame.mu     = get_finite(prm, "Material", "Shear modulus");
+        lame.lambda = get_finite(prm, "Material", "Lame lambda");
+        if (!(lame.mu > 0.))
+          reject("Material/Shear modulus",
+                 prm.get("Shear modulus"),
+                 "must be positive");
+        if (!(lame.lambda + 2. * lame.mu / 3. > 0.))
+          reject("Material/Lame lambda",
+                 prm.get("Lame lambda"),
+                 "the bulk modulus lambda + 2 mu / 3 must be positive");
+      }
+    else
+      {
+        const double E  = get_finite(prm, "Material", "Young's modulus");
+        const double nu = get_finite(prm, "Material", "Poisson's ratio");
+        if (!(E > 0.))
+          reject("Material/Young's modulus",
+                 prm.get("Young's modulus"),
+                 "must be positive");
+        if (!(nu > -1. && nu < 0.5))
+          reject("Material/Poisson's ratio",
+                 prm.get("Poisson's ratio"),
+                 "must lie strictly between -1 and 0.5");
+        lame = LameParameters::from_young_poisson(E, nu);
+      }
+    prm.leave_subsection();
+  }
+} // namespace hyperelastic

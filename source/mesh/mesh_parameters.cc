@@ -1,0 +1,86 @@
+// The scene's Mesh subsection: declaration, documentation and validation of its entries.
+#include <deal.II/base/utilities.h>
+
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/mesh/mesh_parameters.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hyperelastic
+{
+  using dealii::Patterns::Anything;
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::List;
+  using dealii::Patterns::MultipleSelection;
+  using dealii::Patterns::Selection;
+
+  void
+  MeshParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    prm.declare_entry(
+      "Source",
+      "box",
+      Selection("box|file"),
+      "'box': a generated box of simplices (rectangle in 2D) with boundary ids "
+      "0/1 on the faces x = min/max, 2/3 on y = min/max, 4/5 on z = min/max. "
+      "'file': a gmsh .msh file (format 2 or 4, ASCII) whose physical tags on "
+      "boundary faces become boundary ids.");
+    prm.declare_entry("File",
+                      "",
+                      Anything(),
+                      "Mesh file for Source = file; a relative path is read "
+                      "relative to the folder of the scene file.");
+    prm.declare_entry("Lower corner",
+                      "0, 0, 0",
+                      List(Double(), 2, 3),
+                      "Box: coordinates of the lower corner (dim values).");
+    prm.declare_entry("Upper corner",
+                      "1, 1, 1",
+                      List(Double(), 2, 3),
+                      "Box: coordinates of the upper corner (dim values).");
+    prm.declare_entry("Subdivisions",
+                      "1, 1, 1",
+                      List(Integer(1), 2, 3),
+                      "Box: number of cells per direction (dim values); each "
+                      "square is split into 2 triangles, each cube into 5 "
+                      "tetrahedra.");
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Integer(0, 10),
+                      "Uniform refinements of the mesh before it is "
+                      "partitioned (each one multiplies the cell count by "
+                      "2^dim).");
+    prm.leave_subsection();
+  }
+
+  void
+  MeshParameters::parse(ParameterHandler &prm, const std::string &scene_folder)
+  {
+    prm.enter_subsection("Mesh");
+    source = prm.get("Source") == "box" ? MeshSource::box : MeshSource::file;
+    file   = dealii::Utilities::trim(prm.get("File"));
+    if (source == MeshSource::file)
+      {
+        if (file.empty())
+          reject("Mesh/File", file, "a mesh file is needed when Source = file");
+        if (file[0] != '/')
+          file = scene_folder + "/" + file;
+      }
+    for (const auto &v :
+         dealii::Utilities::split_string_list(prm.get("Lower corner")))
+      lower_corner.push_back(dealii::Utilities::string_to_double(v));
+    for (const auto &v :
+         dealii::Utilities::split_string_list(prm.get("Upper corner")))
+      upper_corner.push_back(dealii::Utilities::string_to_double(v));
+    for (const auto &v :
+         dealii::Utilities::split_string_list(prm.get("Subdivisions")))
+      subdivisions.push_back(dealii::Utilities::string_to_int(v));
+    global_refinements = prm.get_integer("Global refinements");
+    prm.leave_subsection();
+  }
+} // namespace hyperelastic

@@ -1,0 +1,88 @@
+// The scene's Linear solver subsection: declaration, documentation and validation of its entries.
+#include <deal.II/base/utilities.h>
+
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/solvers/linear_solver_parameters.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hyperelastic
+{
+  using dealii::Patterns::Anything;
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::List;
+  using dealii::Patterns::MultipleSelection;
+  using dealii::Patterns::Selection;
+
+  void
+  LinearSolverParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry("Type",
+                      "CG with AMG",
+                      Selection("CG with AMG|direct"),
+                      "'CG with AMG': conjugate gradients preconditioned by "
+                      "Trilinos ML algebraic multigrid with all rigid-body "
+                      "modes (scales to large meshes). 'direct': sparse LU "
+                      "(robust, for small problems).");
+    prm.declare_entry("Relative tolerance",
+                      "1e-8",
+                      Double(0, 1),
+                      "CG stops when the residual is reduced by this factor.");
+    prm.declare_entry(
+      "Max iterations",
+      "1000",
+      Integer(1),
+      "CG iterations before a linear-solver failure is reported.");
+    prm.declare_entry(
+      "Direct solver",
+      "Amesos_Klu",
+      Selection("Amesos_Klu|Amesos_Umfpack|Amesos_Mumps|Amesos_Superludist"),
+      "Amesos solver used by Type = direct. Not every Trilinos build has "
+      "all of them (Debian 12's: Amesos_Klu and Amesos_Mumps); one that is "
+      "missing is rejected at start, with the list of those available.");
+    prm.declare_entry("AMG aggregation threshold",
+                      "1e-4",
+                      Double(0, 1),
+                      "ML drops matrix entries below this (relative) when "
+                      "forming aggregates.");
+    prm.declare_entry("AMG smoother sweeps",
+                      "2",
+                      Integer(1, 10),
+                      "Degree of the Chebyshev smoother on each level.");
+    prm.declare_entry(
+      "AMG rebuild growth",
+      "1.5",
+      Double(0),
+      "The AMG hierarchy (the expensive part of a CG solve) is kept across "
+      "Newton iterations and load steps, and rebuilt from the current "
+      "tangent once CG needs more than this factor times the iterations per "
+      "decade of residual reduction of the first solve with the hierarchy "
+      "(and at least 5 more), or when CG fails with an old hierarchy. 0: "
+      "rebuild for every solve.");
+    prm.leave_subsection();
+  }
+
+  void
+  LinearSolverParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    type               = prm.get("Type") == "direct" ? LinearSolverType::direct
+                                                     : LinearSolverType::cg_amg;
+    relative_tolerance = prm.get_double("Relative tolerance");
+    if (!(relative_tolerance > 0.))
+      reject("Linear solver/Relative tolerance",
+             prm.get("Relative tolerance"),
+             "must be positive");
+    max_iterations        = prm.get_integer("Max iterations");
+    direct_solver         = prm.get("Direct solver");
+    aggregation_threshold = prm.get_double("AMG aggregation threshold");
+    smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
+    amg_rebuild_growth    = prm.get_double("AMG rebuild growth");
+    prm.leave_subsection();
+  }
+} // namespace hyperelastic

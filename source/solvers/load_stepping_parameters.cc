@@ -1,0 +1,61 @@
+// The scene's Load stepping subsection: declaration, documentation and validation of its entries.
+#include <deal.II/base/utilities.h>
+
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/solvers/load_stepping_parameters.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hyperelastic
+{
+  using dealii::Patterns::Anything;
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::List;
+  using dealii::Patterns::MultipleSelection;
+  using dealii::Patterns::Selection;
+
+  void
+  LoadSteppingParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load stepping");
+    prm.declare_entry("Adaptive",
+                      "true",
+                      Bool(),
+                      "When Newton fails in a load step (iteration limit, "
+                      "line-search failure, linear-solver failure, NaN, "
+                      "inverted elements at convergence), return to the last "
+                      "converged state and retry with half the load "
+                      "increment; after two easy steps in a row double it "
+                      "again, up to 1 / 'Loading/Number of load steps'. "
+                      "false: stop at the first failure.");
+    prm.declare_entry("Minimum increment",
+                      "1e-4",
+                      Double(0, 1),
+                      "Smallest load-factor increment; below it the run "
+                      "stops with a convergence failure (exit status 3).");
+    prm.declare_entry("Easy step iterations",
+                      "6",
+                      Integer(1),
+                      "A load step converged in at most this many Newton "
+                      "iterations counts as easy.");
+    prm.leave_subsection();
+  }
+
+  void
+  LoadSteppingParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load stepping");
+    adaptive             = prm.get_bool("Adaptive");
+    minimum_increment    = prm.get_double("Minimum increment");
+    easy_step_iterations = prm.get_integer("Easy step iterations");
+    if (!(minimum_increment > 0.))
+      reject("Load stepping/Minimum increment",
+             prm.get("Minimum increment"),
+             "must be positive");
+    prm.leave_subsection();
+  }
+} // namespace hyperelastic

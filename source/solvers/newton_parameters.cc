@@ -1,0 +1,133 @@
+// The scene's Newton subsection: declaration, documentation and validation of its entries.
+#include <deal.II/base/utilities.h>
+
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/solvers/newton_parameters.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hyperelastic
+{
+  using dealii::Patterns::Anything;
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::List;
+  using dealii::Patterns::MultipleSelection;
+  using dealii::Patterns::Selection;
+
+  void
+  NewtonParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    prm.declare_entry("Max iterations",
+                      "20",
+                      Integer(1),
+                      "Newton iterations allowed per load step before the run "
+                      "stops with a convergence failure.");
+    prm.declare_entry("Absolute residual tolerance",
+                      "0",
+                      Double(0),
+                      "Converged when the l2 norm of the residual on the free "
+                      "degrees of freedom is below this (force units; 0: no "
+                      "absolute floor) ...");
+    prm.declare_entry("Relative residual tolerance",
+                      "1e-10",
+                      Double(0),
+                      "... or below this times the largest l2 norm of the "
+                      "internal or external force vector seen so far in the "
+                      "run (all degrees of freedom, so reactions count), "
+                      "and ...");
+    prm.declare_entry("Update tolerance",
+                      "1e-8",
+                      Double(0),
+                      "... the last Newton update is below this times the "
+                      "largest l2 norm of the displacement vector reached so "
+                      "far in the run.");
+    prm.declare_entry("Line search",
+                      "true",
+                      Bool(),
+                      "Backtrack along each Newton direction (halving the "
+                      "step) until the total potential energy decreases "
+                      "enough (Armijo) and no element leaves the model's "
+                      "domain (J <= 0 for neo-Hookean). While prescribed "
+                      "displacements are still being imposed only the "
+                      "second test applies. false: plain Newton.");
+    prm.declare_entry("Armijo constant",
+                      "1e-4",
+                      Double(0, 0.5),
+                      "Sufficient decrease: a step of length a is accepted "
+                      "if the energy drops by at least this times a times "
+                      "the directional derivative.");
+    prm.declare_entry("Minimum step length",
+                      "1e-4",
+                      Double(0, 1),
+                      "The line search fails (and the load step is cut "
+                      "back) when the step length would fall below this.");
+    prm.declare_entry(
+      "Tangent",
+      "exact, projected on failure",
+      Selection("exact|projected|exact, projected on failure"),
+      "'exact': full Newton with the exact tangent. 'projected': projected "
+      "Newton: the negative eigenvalues of dP/dF at every quadrature point "
+      "are clamped to zero, so the tangent is positive semi-definite and "
+      "every direction descends (robust under extreme compression, but only "
+      "linearly convergent where the exact tangent is indefinite). 'exact, "
+      "projected on failure': full Newton, and an iteration whose direction "
+      "does not descend or whose line search fails is repeated with the "
+      "projected tangent.");
+    prm.declare_entry(
+      "Inexact Newton",
+      "true",
+      Bool(),
+      "Solve each linearization only as accurately as the nonlinear "
+      "residual needs (Eisenstat-Walker forcing terms, choice 2: gamma = "
+      "0.9, exponent 2, safeguarded): early iterations are cheap, and the "
+      "convergence tests, hence the final accuracy, are unchanged. Krylov "
+      "tolerances stay between 'Linear solver/Relative tolerance' and "
+      "'Maximum forcing term'. false: every solve to the linear solver's "
+      "tolerance. Ignored for the linear elastic model (one solve) and the "
+      "direct solver.");
+    prm.declare_entry("Maximum forcing term",
+                      "0.1",
+                      Double(0, 1),
+                      "Loosest relative Krylov tolerance of inexact Newton "
+                      "(used in the first two iterations of a load step).");
+    prm.leave_subsection();
+  }
+
+  void
+  NewtonParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    max_iterations              = prm.get_integer("Max iterations");
+    absolute_residual_tolerance = prm.get_double("Absolute residual tolerance");
+    relative_residual_tolerance = prm.get_double("Relative residual tolerance");
+    update_tolerance            = prm.get_double("Update tolerance");
+    line_search                 = prm.get_bool("Line search");
+    armijo_constant             = prm.get_double("Armijo constant");
+    minimum_step_length         = prm.get_double("Minimum step length");
+    inexact                     = prm.get_bool("Inexact Newton");
+    max_forcing                 = prm.get_double("Maximum forcing term");
+    if (!(max_forcing > 0.))
+      reject("Newton/Maximum forcing term",
+             prm.get("Maximum forcing term"),
+             "must be positive");
+    const std::string tangent_name = prm.get("Tangent");
+    tangent = tangent_name == "exact" ? NewtonTangent::exact
+              : tangent_name == "projected"
+                ? NewtonTangent::projected
+                : NewtonTangent::exact_then_projected;
+    if (!(minimum_step_length > 0.))
+      reject("Newton/Minimum step length",
+             prm.get("Minimum step length"),
+             "must be positive");
+    if (absolute_residual_tolerance == 0. && relative_residual_tolerance == 0.)
+      reject("Newton/Relative residual tolerance",
+             "0",
+             "absolute and relative residual tolerance cannot both be zero");
+    prm.leave_subsection();
+  }
+} // namespace hyperelastic
