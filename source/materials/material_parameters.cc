@@ -34,8 +34,8 @@ namespace hyperelastic
                       "(psi = kappa/4 (J^2 - 1 - 2 ln J) + mu/2 (J^(-2/3) I1 "
                       "- 3), the model of the finite-strain literature, e.g. "
                       "Cook's membrane; bulk modulus kappa = lambda + 2 mu / "
-                      "3; undefined for inverted elements). See README, "
-                      "'Choosing a model'.");
+                      "3; undefined for inverted elements). See "
+                      "doc/manual.md, 'Choosing a model'.");
     prm.declare_entry("Elastic constants",
                       "Young's modulus and Poisson's ratio",
                       Selection("Young's modulus and Poisson's ratio|Lame|"
