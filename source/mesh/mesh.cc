@@ -1,8 +1,10 @@
-// Serial mesh generation or reading, validation of its cells, METIS
-// partitioning and distribution.
+// Mesh creation on one rank (the reader): box generation or gmsh reading,
+// validation and reorientation of the cells, refinement and METIS
+// partitioning; then distribution, every other rank receiving only the
+// description of its own part.
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/grid/tria_description.h>
@@ -10,14 +12,24 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/mesh.h>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
+
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
+#include <exception>
 #include <fstream>
 #include <limits>
+#include <map>
+#include <memory>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace hyperelastic
@@ -48,51 +60,46 @@ namespace hyperelastic
   namespace
   {
     // ------------------------------------------------------------------
-    // Validation of the input cells.
+    // Policy for the input cells.
     //
-    // What deal.II 9.4 itself does with bad simplex input (tried with
-    // GridIn::read_msh and Triangulation::create_triangulation on small
-    // hand-made meshes):
-    // - GridIn::read_msh silently reorders the vertices of every cell with
-    //   negative measure (its fix-up step calls
-    //   GridTools::invert_cells_with_negative_measure, which for simplices
-    //   swaps two vertices), whether all cells or only some are inverted: no
-    //   error, no warning. The cells keep the order of the file.
-    // - Triangulation::create_triangulation, given simplices directly,
-    //   accepts inverted cells (measure() < 0) and zero-volume cells.
-    // - Neither rejects zero-area triangles or zero-volume tetrahedra.
-    // - For a 2D mesh GridIn keeps x and y of each node and drops z: a mesh
-    //   drawn in the xz-plane becomes a mesh of zero-area triangles, a mesh in
-    //   a tilted plane a silently distorted projection.
-    // So the checks below read the cells as the file lists them, and check
-    // the triangulation deal.II made as well.
+    // Vertex order: any. Mesh writers differ: gmsh and TetGen list cells
+    // positively oriented, gmsh writes every triangle clockwise for a
+    // surface whose curve loop runs clockwise, and DOLFIN/FEniCS and meshio
+    // write cells in sorted vertex order, so that about half of them are
+    // negatively oriented. A cell listed with negative orientation is
+    // reoriented (its last two vertices swapped, as deal.II's GridIn does);
+    // this changes no geometry and no result.
     //
-    // Policy. A cell whose orientation differs from the rest of the mesh is
-    // "inverted" and rejected with its number: either the mesh is folded
-    // there or the file lists that cell wrongly (hand edits, a broken
-    // exporter), and silently reordering it, as deal.II does, would hide a
-    // folded mesh. A mesh whose cells are all negatively
-    // oriented is consistently mirrored, not broken (gmsh writes all
-    // triangles clockwise for a surface whose curve loop runs clockwise); the
-    // reordering by deal.II then changes no geometry and no result, so such a
-    // file is accepted. Cells of zero area or volume are always rejected.
+    // What is rejected, with the gmsh element numbers:
+    // - cells of zero area or volume (see simplex_measure() for the test);
+    // - folds: two cells sharing a face whose opposite vertices lie on the
+    //   same side of it overlap, as when a node is pushed through a face.
+    //   Reorienting cells cannot hide this, since the test depends on the
+    //   positions only. The cells named are the inverted ones: across every
+    //   face the orientation is propagated (kept, or flipped where the face
+    //   is folded), and in each connected part of the mesh the minority is
+    //   inverted.
+    // - 2D meshes whose nodes are not in a plane z = const (deal.II would
+    //   drop z and compute on a distorted projection).
+    //
+    // What deal.II 9.4 itself does (tried with GridIn::read_msh and
+    // Triangulation::create_triangulation on small hand-made meshes):
+    // GridIn reorders negatively oriented simplices silently;
+    // create_triangulation accepts inverted and zero-volume cells; neither
+    // notices folds. Hence the checks here.
 
-    /// A simplex as listed in the input: a number the user can find there
-    /// and its vertices in the listed order.
-    template <int dim>
-    struct ListedSimplex
-    {
-      long long                       number;
-      std::array<Point<dim>, dim + 1> vertices;
-    };
-
-    /// How the numbers of ListedSimplex are to be read in messages.
+    /// How cell numbers are to be read in messages.
     struct Numbering
     {
       std::string singular; ///< "gmsh element"
       std::string plural;   ///< "gmsh elements"
       std::string note;     ///< where to find them, in parentheses
     };
+
+    const Numbering gmsh_numbering = {
+      "gmsh element",
+      "gmsh elements",
+      "(the element numbers of the file's $Elements section)"};
 
     /// "3, 7, 12" (at most 10, then "and N more").
     std::string
@@ -119,15 +126,11 @@ namespace hyperelastic
              (one ? " is" : " are");
     }
 
-    /// Throws InputError naming the cells of @p cells that have zero volume
-    /// or an orientation opposite to the other cells (or negative
-    /// orientation everywhere, unless @p accept_mirrored). @p where starts
-    /// the message ("mesh file 'a.msh'").
-    ///
-    /// Zero volume: with det the determinant of the edge vectors v_k - v_0
-    /// (twice the area, six times the volume, signed by orientation), L the
-    /// longest edge and X the largest vertex coordinate in magnitude, a cell
-    /// is degenerate if
+    /// The signed measure of a simplex: det, the determinant of the edge
+    /// vectors v_k - v_0 (twice the area, six times the volume, signed by
+    /// orientation), and whether the simplex is degenerate. With L the
+    /// longest edge and X the largest vertex coordinate in magnitude, it is
+    /// degenerate if
     ///   |det| <= 1e-12 L^dim + 64 eps X L^(dim-1).
     /// The first term is scale-free: it flags cells whose height over their
     /// longest edge (2D) or volume over that of a cube of it (3D) is below
@@ -136,125 +139,103 @@ namespace hyperelastic
     /// tetrahedron 1e-4 times smaller than a mesh of size h). The second
     /// bounds the rounding error of det for coordinates stored to relative
     /// precision eps: vertices that are collinear (coplanar) in the file's
-    /// decimals are caught even far from the origin.
-    template <int dim>
-    void
-    check_simplices(const std::vector<ListedSimplex<dim>> &cells,
-                    const std::string                     &where,
-                    const Numbering                       &numbering,
-                    const bool                             accept_mirrored)
+    /// decimals are caught even far from the origin. NaN coordinates make a
+    /// cell degenerate.
+    struct SimplexMeasure
     {
-      std::vector<long long> degenerate, positive, negative;
-      for (const ListedSimplex<dim> &cell : cells)
-        {
-          Tensor<2, dim> edges;
-          double         longest = 0., largest_coordinate = 0.;
-          for (unsigned int a = 0; a <= dim; ++a)
-            {
-              if (a > 0)
-                for (unsigned int d = 0; d < dim; ++d)
-                  edges[d][a - 1] = cell.vertices[a][d] - cell.vertices[0][d];
-              for (unsigned int d = 0; d < dim; ++d)
-                largest_coordinate =
-                  std::max(largest_coordinate, std::abs(cell.vertices[a][d]));
-              for (unsigned int b = a + 1; b <= dim; ++b)
-                longest = std::max(longest,
-                                   cell.vertices[a].distance(cell.vertices[b]));
-            }
-          const double det = determinant(edges);
-          const double tolerance =
-            std::pow(longest, dim - 1) *
-            (1e-12 * longest +
-             64. * std::numeric_limits<double>::epsilon() * largest_coordinate);
-          if (!(std::abs(det) > tolerance)) // also catches NaN coordinates
-            degenerate.push_back(cell.number);
-          else
-            (det > 0. ? positive : negative).push_back(cell.number);
-        }
+      double det;
+      bool   degenerate;
+    };
 
-      const std::string where_prefix = where + ": ";
-      const auto        numbers      = [&](const std::vector<long long> &n) {
+    template <int dim, typename VertexOf>
+    SimplexMeasure
+    simplex_measure(const VertexOf &vertex)
+    {
+      Tensor<2, dim> edges;
+      double         longest = 0., largest_coordinate = 0.;
+      for (unsigned int a = 0; a <= dim; ++a)
+        {
+          const Point<dim> &x = vertex(a);
+          if (a > 0)
+            for (unsigned int d = 0; d < dim; ++d)
+              edges[d][a - 1] = x[d] - vertex(0)[d];
+          for (unsigned int d = 0; d < dim; ++d)
+            largest_coordinate = std::max(largest_coordinate, std::abs(x[d]));
+          for (unsigned int b = a + 1; b <= dim; ++b)
+            longest = std::max(longest, x.distance(vertex(b)));
+        }
+      const double det = determinant(edges);
+      const double tolerance =
+        std::pow(longest, dim - 1) *
+        (1e-12 * longest +
+         64. * std::numeric_limits<double>::epsilon() * largest_coordinate);
+      return {det, !(std::abs(det) > tolerance)};
+    }
+
+    /// The problems found in the cells as one text ("" if none):
+    /// @p degenerate and @p inverted hold cell numbers. @p inverted_listed:
+    /// -1 (+1) if exactly the inverted cells are listed with negative
+    /// (positive) orientation, so that the file's vertex order shows the
+    /// fold too; 0 if the listing says nothing.
+    template <int dim>
+    std::string
+    cell_problems(const std::size_t             n_cells,
+                  const std::vector<long long> &degenerate,
+                  const std::vector<long long> &inverted,
+                  const int                     inverted_listed,
+                  const Numbering              &numbering)
+    {
+      const auto numbers = [&](const std::vector<long long> &n) {
         return (n.size() == 1 ? numbering.singular : numbering.plural) + " " +
                list_numbers(n) + " " + numbering.note;
       };
       std::vector<std::string> problems;
       if (!degenerate.empty())
         problems.push_back(
-          count_of<dim>(degenerate.size(), cells.size()) + " degenerate (" +
+          count_of<dim>(degenerate.size(), n_cells) + " degenerate (" +
           (dim == 2 ? "zero area, collinear vertices): "
                     : "zero volume, coplanar vertices): ") +
           numbers(degenerate) +
-          (degenerate.size() == cells.size()
+          (degenerate.size() == n_cells
              ? "; every cell is flat: are the coordinates right?"
              : ""));
-      if (!positive.empty() && !negative.empty())
+      if (!inverted.empty())
         {
-          // The minority is the odd one out; on a tie, the negative ones.
-          const bool minority_negative = negative.size() <= positive.size();
-          const std::vector<long long> &odd =
-            minority_negative ? negative : positive;
           const std::size_t n_others =
-            positive.size() + negative.size() - odd.size();
-          const std::string minus =
-            dim == 2 ? "listed clockwise"
-                     : "negatively oriented, (v1 - v0) x (v2 - v0) . "
-                       "(v3 - v0) < 0,";
-          const std::string plus =
-            dim == 2 ? "counter-clockwise" : "positively oriented";
-          const std::string odd_plus =
-            dim == 2 ? "listed counter-clockwise"
-                     : "positively oriented, (v1 - v0) x (v2 - v0) . "
-                       "(v3 - v0) > 0,";
-          const std::string others_minus =
-            dim == 2 ? "clockwise" : "negatively oriented";
+            n_cells - degenerate.size() - inverted.size();
+          std::string why;
+          if (inverted_listed < 0)
+            why = dim == 2
+                    ? "listed clockwise while the other " +
+                        std::to_string(n_others) + " are counter-clockwise"
+                    : "negatively oriented, (v1 - v0) x (v2 - v0) . "
+                      "(v3 - v0) < 0, while the other " +
+                        std::to_string(n_others) + " are positively oriented";
+          else if (inverted_listed > 0)
+            why = dim == 2
+                    ? "listed counter-clockwise while the other " +
+                        std::to_string(n_others) + " are clockwise"
+                    : "positively oriented, (v1 - v0) x (v2 - v0) . "
+                      "(v3 - v0) > 0, while the other " +
+                        std::to_string(n_others) + " are negatively oriented";
+          else
+            why = std::string(inverted.size() == 1 ? "it" : "each") +
+                  " lies on the same side of a " +
+                  (dim == 2 ? "edge" : "face") + " as the neighbour across it";
           problems.push_back(
-            count_of<dim>(odd.size(), cells.size()) + " inverted (" +
-            (minority_negative ? minus : odd_plus) + " while the other " +
-            std::to_string(n_others) + " are " +
-            (minority_negative ? plus : others_minus) + "): " + numbers(odd) +
-            "; regenerate the mesh or swap two vertices of " +
-            (odd.size() == 1 ? "this element" : "these elements"));
+            count_of<dim>(inverted.size(), n_cells) + " inverted (" + why +
+            "): " + numbers(inverted) +
+            "; the mesh is folded there, as when a node is pushed through a " +
+            (dim == 2 ? "edge" : "face") +
+            ": correct the node coordinates or regenerate the mesh (the "
+            "vertex order is not the problem: cells listed in either "
+            "orientation are accepted)");
         }
-      else if (!negative.empty() && !accept_mirrored)
-        problems.push_back(
-          std::string("all ") + std::to_string(negative.size()) +
-          (dim == 2 ? " triangles are listed clockwise"
-                    : " tetrahedra have negative orientation") +
-          " (the mesh is mirrored); swap two vertices of every cell");
-      if (problems.empty())
-        return;
-      std::string message = where_prefix;
+      std::string text;
       for (std::size_t i = 0; i < problems.size(); ++i)
-        message += (i > 0 ? "; " : "") + problems[i];
-      throw InputError(message);
+        text += (i > 0 ? "; " : "") + problems[i];
+      return text;
     }
-
-    /// The cells of a triangulation in deal.II's vertex order.
-    template <int dim>
-    std::vector<ListedSimplex<dim>>
-    triangulation_simplices(const Triangulation<dim> &tria)
-    {
-      std::vector<ListedSimplex<dim>> cells;
-      for (const auto &cell : tria.active_cell_iterators())
-        {
-          ListedSimplex<dim> listed;
-          listed.number = cell->active_cell_index();
-          for (unsigned int v = 0; v <= dim; ++v)
-            listed.vertices[v] = cell->vertex(v);
-          cells.push_back(listed);
-        }
-      return cells;
-    }
-
-    /// The triangles (dim = 2) or tetrahedra (dim = 3) of an ASCII gmsh file
-    /// (format 1, 2 or 4) as the file lists them: element tag and the three
-    /// coordinates of each vertex, in the listed order. Only for validation:
-    /// deal.II's reader has already read the file successfully.
-    struct GmshSimplices
-    {
-      std::vector<long long>               tags;
-      std::vector<std::array<Point<3>, 4>> vertices; ///< the first dim + 1
-    };
 
     /// Name of a gmsh element type (the common ones), for messages.
     std::string
@@ -287,191 +268,453 @@ namespace hyperelastic
         }
     }
 
-    template <int dim>
-    GmshSimplices
-    read_gmsh_simplices(const std::string &file_name)
+    // ------------------------------------------------------------------
+    // gmsh reading: the file is read into memory once and parsed once,
+    // into what deal.II's GridIn::read_msh would hand to
+    // Triangulation::create_triangulation (the same vertices in the same
+    // order, cells with the physical tag as material id, boundary lines and
+    // triangles with the physical tag as boundary id) plus the element
+    // number of every cell, for messages.
+
+    /// The text of a gmsh file, read as whitespace-separated tokens; line
+    /// ends matter only where skip_line() is called.
+    class GmshText
     {
-      std::ifstream in(file_name);
-      std::string   line;
-      const auto    fail = [&](const std::string &what) {
+    public:
+      GmshText(std::string text, const std::string &file_name)
+          : text(std::move(text))
+          , file_name(file_name)
+      {
+      }
+
+      /// Whether another token follows.
+      bool
+      more()
+      {
+        skip_blanks();
+        return pos < text.size();
+      }
+
+      std::string_view
+      word()
+      {
+        if (!more())
+          fail("unexpected end of file");
+        const std::size_t start = pos;
+        while (pos < text.size() && !is_blank(text[pos]))
+          ++pos;
+        return std::string_view(text).substr(start, pos - start);
+      }
+
+      template <typename Number>
+      Number
+      number()
+      {
+        std::string_view token = word();
+        if (std::is_floating_point_v<Number> && token.size() > 1 &&
+            token[0] == '+')
+          token.remove_prefix(1);
+        Number     value{};
+        const auto end    = token.data() + token.size();
+        const auto result = std::from_chars(token.data(), end, value);
+        if (result.ec != std::errc() || result.ptr != end)
+          fail("cannot parse '" + std::string(token) + "' on line " +
+               std::to_string(line_number()) + " as " +
+               (std::is_floating_point_v<Number> ? "a number" : "an integer"));
+        return value;
+      }
+
+      /// Moves past the end of the current line.
+      void
+      skip_line()
+      {
+        const std::size_t end = text.find('\n', pos);
+        pos = end == std::string::npos ? text.size() : end + 1;
+      }
+
+      /// Skips the section that begins with @p name, up to the word that
+      /// starts with "$End" (or "$END").
+      void
+      skip_section(const std::string_view name)
+      {
+        for (;;)
+          {
+            skip_line();
+            if (!more())
+              fail("unexpected end of file in section " + std::string(name));
+            if (text.compare(pos, 4, "$End") == 0 ||
+                text.compare(pos, 4, "$END") == 0)
+              {
+                word();
+                return;
+              }
+          }
+      }
+
+      /// Throws unless the next word is @p end.
+      void
+      expect(const std::string_view end)
+      {
+        const std::string_view w = word();
+        if (w != end)
+          fail("expected " + std::string(end) + " on line " +
+               std::to_string(line_number()) + " but found '" + std::string(w) +
+               "' (do the counts match the lists?)");
+      }
+
+      [[noreturn]] void
+      fail(const std::string &what) const
+      {
         throw InputError("cannot read mesh file '" + file_name + "': " + what);
-      };
-      // The next non-blank line, into @p ls.
-      const auto next_line = [&](std::istringstream &ls) {
-        while (std::getline(in, line))
-          if (line.find_first_not_of(" \t\r") != std::string::npos)
-            {
-              ls.clear();
-              ls.str(line);
-              return;
-            }
-        fail("unexpected end of file");
-      };
-      const auto expect = [&](const std::istringstream &ls) {
-        if (ls.fail())
-          fail("cannot parse the line '" + line + "'");
-      };
+      }
+
+    private:
+      static bool
+      is_blank(const char c)
+      {
+        return c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\f' ||
+               c == '\v';
+      }
+
+      void
+      skip_blanks()
+      {
+        while (pos < text.size() && is_blank(text[pos]))
+          ++pos;
+      }
+
+      std::size_t
+      line_number() const
+      {
+        return 1 + std::count(text.begin(),
+                              text.begin() + std::min(pos, text.size()),
+                              '\n');
+      }
+
+      const std::string text;
+      const std::string file_name;
+      std::size_t       pos = 0;
+    };
+
+    /// Node tag -> position in the list of nodes.
+    class NodeIndex
+    {
+    public:
+      explicit NodeIndex(const std::vector<long long> &tags)
+      {
+        long long largest  = 0;
+        bool      negative = false;
+        for (const long long tag : tags)
+          {
+            largest  = std::max(largest, tag);
+            negative = negative || tag < 0;
+          }
+        // gmsh numbers nodes 1 ... n: a table then; a hash map for sparse
+        // numbers.
+        dense = !negative &&
+                largest <= 2 * static_cast<long long>(tags.size()) + 1024;
+        if (dense)
+          table.assign(largest + 1, numbers::invalid_unsigned_int);
+        for (std::size_t i = 0; i < tags.size(); ++i)
+          if (dense)
+            table[tags[i]] = i; // a repeated tag: the last one, as in GridIn
+          else
+            map[tags[i]] = i;
+      }
+
+      /// numbers::invalid_unsigned_int if there is no such node.
+      unsigned int
+      operator()(const long long tag) const
+      {
+        if (dense)
+          return tag >= 0 && tag < static_cast<long long>(table.size())
+                   ? table[tag]
+                   : numbers::invalid_unsigned_int;
+        const auto it = map.find(tag);
+        return it == map.end() ? numbers::invalid_unsigned_int : it->second;
+      }
+
+    private:
+      bool                                        dense = true;
+      std::vector<unsigned int>                   table;
+      std::unordered_map<long long, unsigned int> map;
+    };
+
+    template <int dim>
+    struct GmshMesh
+    {
+      std::vector<Point<dim>>    vertices;
+      std::vector<CellData<dim>> cells;
+      SubCellData                boundary;
+      std::vector<long long>     element_numbers; ///< of cells
+      /// Bounds of the nodes of the cells, in all three coordinates.
+      Point<3> lower, upper;
+    };
+
+    /// The whole file, or InputError.
+    std::string
+    read_file(const std::string &file_name)
+    {
+      std::ifstream in(file_name, std::ios::binary);
+      if (!in)
+        throw InputError("cannot open mesh file '" + file_name +
+                         "' (Mesh/File)");
+      in.seekg(0, std::ios::end);
+      const std::streamoff size = in.tellg();
+      in.seekg(0);
+      std::string text(size > 0 ? size : 0, '\0');
+      if (size < 0 || !in.read(text.data(), size))
+        throw InputError("cannot read mesh file '" + file_name + "'");
+      return text;
+    }
+
+    /// Reads an ASCII gmsh file, format 1, 2 or 4, as a mesh of triangles
+    /// (dim = 2) or tetrahedra (dim = 3). Points, lines and, in 3D,
+    /// triangles carry boundary ids; any other element type is an error.
+    template <int dim>
+    GmshMesh<dim>
+    read_gmsh(const std::string &file_name)
+    {
+      GmshText in(read_file(file_name), file_name);
 
       // gmsh element types: 2 is the 3-node triangle, 4 the 4-node tet.
-      const int                               simplex_type = dim == 2 ? 2 : 4;
-      double                                  version      = 0.;
-      std::unordered_map<long long, Point<3>> nodes;
-      std::vector<std::pair<long long, std::array<long long, 4>>> elements;
+      const int     simplex_type = dim == 2 ? 2 : 4;
+      double        version      = 0.;
+      GmshMesh<dim> mesh;
+      // Per entity dimension: entity tag -> physical tag (format 4).
+      std::array<std::map<long long, int>, 4> physical_tags;
+      std::vector<Point<3>>                   nodes;
+      std::vector<long long>                  node_tags;
+      std::unique_ptr<NodeIndex>              node_index;
+      long long                               unsupported_tag  = 0;
+      long long                               n_unsupported    = 0;
+      int                                     unsupported_type = 0;
 
-      const auto read_node = [&](std::istringstream &ls, const long long tag) {
-        Point<3> x;
-        ls >> x[0] >> x[1] >> x[2];
-        expect(ls);
-        nodes[tag] = x;
+      const auto vertex = [&](const long long element, const long long node) {
+        const unsigned int v =
+          node_index ? (*node_index)(node) : numbers::invalid_unsigned_int;
+        if (v == numbers::invalid_unsigned_int)
+          in.fail("element " + std::to_string(element) + " refers to node " +
+                  std::to_string(node) + ", which $Nodes does not define");
+        return v;
       };
-      // The rest of an element line after its tag and header.
-      long long  unsupported_tag = 0, n_unsupported = 0;
-      int        unsupported_type = 0;
+
+      const auto read_entities = [&]() {
+        std::array<long long, 4> n;
+        for (long long &count : n)
+          count = in.number<long long>();
+        in.skip_line();
+        for (unsigned int d = 0; d < 4; ++d)
+          for (long long i = 0; i < n[d]; ++i)
+            {
+              // Points: tag x y z (4.0: a box of 6 numbers); curves, surfaces
+              // and volumes: tag and a box; then the physical tags, then the
+              // bounding entities (skipped).
+              const long long tag     = in.number<long long>();
+              const int n_coordinates = (d == 0 && version >= 4.05) ? 3 : 6;
+              for (int k = 0; k < n_coordinates; ++k)
+                in.number<double>();
+              const long long n_physical = in.number<long long>();
+              if (n_physical > 1)
+                in.fail("entity " + std::to_string(tag) + " of dimension " +
+                        std::to_string(d) + " has " +
+                        std::to_string(n_physical) +
+                        " physical tags; one is read as the boundary id, "
+                        "more are not supported");
+              int physical = 0; // none: 0, as GridIn
+              if (n_physical == 1)
+                physical = in.number<int>();
+              physical_tags[d][tag] = physical;
+              in.skip_line();
+            }
+        in.expect("$EndEntities");
+      };
+
+      const auto read_nodes = [&]() {
+        if (version == 0.)
+          in.fail("no $MeshFormat section before $Nodes");
+        long long n_blocks = 1, n_nodes = 0;
+        if (version >= 4.)
+          n_blocks = in.number<long long>();
+        n_nodes = in.number<long long>();
+        in.skip_line(); // format 4.1: smallest and largest tag
+        nodes.reserve(n_nodes);
+        node_tags.reserve(n_nodes);
+        const auto coordinates = [&]() {
+          Point<3> x;
+          for (unsigned int d = 0; d < 3; ++d)
+            x[d] = in.number<double>();
+          nodes.push_back(x);
+          in.skip_line(); // parametric coordinates, if any
+        };
+        for (long long b = 0; b < n_blocks; ++b)
+          {
+            long long n = n_nodes;
+            if (version >= 4.)
+              {
+                // Entity tag and dimension (4.1: the other way round),
+                // "parametric", the node count.
+                in.number<long long>();
+                in.number<long long>();
+                in.number<long long>();
+                n = in.number<long long>();
+                in.skip_line();
+              }
+            if (version >= 4.05) // n tags, then n coordinate lines
+              {
+                for (long long i = 0; i < n; ++i)
+                  node_tags.push_back(in.number<long long>());
+                for (long long i = 0; i < n; ++i)
+                  coordinates();
+              }
+            else // "tag x y z" per line
+              for (long long i = 0; i < n; ++i)
+                {
+                  node_tags.push_back(in.number<long long>());
+                  coordinates();
+                }
+          }
+        in.expect(version < 2. ? "$ENDNOD" : "$EndNodes");
+        node_index = std::make_unique<NodeIndex>(node_tags);
+        node_tags.clear();
+        node_tags.shrink_to_fit();
+      };
+
+      // One element: its number, type and physical tag read, its nodes next.
       const auto read_element =
-        [&](std::istringstream &ls, const long long tag, const int type) {
-          // Points (15), lines (1) and, in 3D, triangles (2) carry boundary
-          // ids; anything else is an element hyperelastic cannot compute on.
-          if (type != simplex_type && type != 15 && type != 1 &&
-              !(dim == 3 && type == 2))
+        [&](const long long tag, const int type, const int physical) {
+          if (type == simplex_type)
+            {
+              CellData<dim> cell(dim + 1);
+              for (unsigned int k = 0; k <= dim; ++k)
+                cell.vertices[k] = vertex(tag, in.number<long long>());
+              cell.material_id = physical;
+              mesh.cells.push_back(std::move(cell));
+              mesh.element_numbers.push_back(tag);
+            }
+          else if (type == 1) // line: boundary id of an edge
+            {
+              CellData<1> line;
+              for (unsigned int k = 0; k < 2; ++k)
+                line.vertices[k] = vertex(tag, in.number<long long>());
+              line.boundary_id = physical;
+              mesh.boundary.boundary_lines.push_back(line);
+            }
+          else if (dim == 3 && type == 2) // triangle: boundary id of a face
+            {
+              CellData<2> triangle(3);
+              for (unsigned int k = 0; k < 3; ++k)
+                triangle.vertices[k] = vertex(tag, in.number<long long>());
+              triangle.boundary_id = physical;
+              mesh.boundary.boundary_quads.push_back(std::move(triangle));
+            }
+          else if (type != 15) // points carry nothing for dim > 1
             {
               if (n_unsupported++ == 0)
                 {
                   unsupported_tag  = tag;
                   unsupported_type = type;
                 }
-              return;
             }
-          if (type != simplex_type)
-            return;
-          std::array<long long, 4> v = {{0, 0, 0, 0}};
-          for (unsigned int k = 0; k <= dim; ++k)
-            ls >> v[k];
-          expect(ls);
-          elements.emplace_back(tag, v);
+          in.skip_line();
         };
 
-      while (std::getline(in, line))
+      const auto read_elements = [&]() {
+        long long n_blocks = 1, n_elements = 0;
+        if (version >= 4.)
+          n_blocks = in.number<long long>();
+        n_elements = in.number<long long>();
+        in.skip_line();
+        mesh.cells.reserve(n_elements);
+        mesh.element_numbers.reserve(n_elements);
+        for (long long b = 0; b < n_blocks; ++b)
+          {
+            long long n        = n_elements;
+            int       type     = 0;
+            int       physical = 0;
+            if (version >= 4.)
+              {
+                // 4.0: entity tag, entity dimension; 4.1: the other way
+                // round; then element type and count.
+                const long long a = in.number<long long>();
+                const long long c = in.number<long long>();
+                type              = in.number<int>();
+                n                 = in.number<long long>();
+                in.skip_line();
+                const long long entity_dim = version >= 4.05 ? a : c;
+                const long long entity_tag = version >= 4.05 ? c : a;
+                if (entity_dim < 0 || entity_dim > 3)
+                  in.fail("element block of entity dimension " +
+                          std::to_string(entity_dim));
+                const auto found = physical_tags[entity_dim].find(entity_tag);
+                physical =
+                  found == physical_tags[entity_dim].end() ? 0 : found->second;
+              }
+            for (long long i = 0; i < n; ++i)
+              {
+                const long long tag = in.number<long long>();
+                if (version < 4.)
+                  {
+                    type = in.number<int>();
+                    if (version < 2.) // physical, elementary, node count
+                      {
+                        physical = in.number<int>();
+                        in.number<long long>();
+                        in.number<long long>();
+                      }
+                    else // tag count, tags (the first is the physical one)
+                      {
+                        const int n_tags = in.number<int>();
+                        physical         = 0;
+                        for (int t = 0; t < n_tags; ++t)
+                          {
+                            const int value = in.number<int>();
+                            if (t == 0)
+                              physical = value;
+                          }
+                      }
+                  }
+                read_element(tag, type, physical);
+              }
+          }
+        in.expect(version < 2. ? "$ENDELM" : "$EndElements");
+      };
+
+      while (in.more())
         {
-          const std::string  section = Utilities::trim(line);
-          std::istringstream ls;
+          const std::string_view section = in.word();
           if (section == "$MeshFormat")
             {
-              next_line(ls);
-              ls >> version;
-              expect(ls);
+              version             = in.number<double>();
+              const int file_type = in.number<int>();
+              // deal.II's reader never took binary files either; say so rather
+              // than fail on binary data.
+              if (file_type != 0)
+                throw InputError(
+                  "mesh file '" + file_name +
+                  "' is a binary gmsh file; save it as ASCII (gmsh "
+                  "option -format msh41 without -bin, or Mesh.Binary = 0)");
+              if (!(version >= 2. && version < 4.15))
+                in.fail("gmsh format version " + std::to_string(version) +
+                        " is not supported (1, 2, 4.0 and 4.1 are)");
+              in.skip_line();
+              in.expect("$EndMeshFormat");
             }
           else if (section == "$NOD" || section == "$Nodes")
             {
               if (section == "$NOD") // format 1 has no $MeshFormat
                 version = 1.;
-              next_line(ls);
-              if (version < 4.)
-                {
-                  long long n = 0;
-                  ls >> n;
-                  expect(ls);
-                  for (long long i = 0; i < n; ++i)
-                    {
-                      next_line(ls);
-                      long long tag = 0;
-                      ls >> tag;
-                      read_node(ls, tag);
-                    }
-                }
-              else
-                {
-                  long long n_blocks = 0;
-                  ls >> n_blocks;
-                  expect(ls);
-                  for (long long b = 0; b < n_blocks; ++b)
-                    {
-                      // 4.0: entity tag, entity dim; 4.1: the other way
-                      // round. Then "parametric" and the node count.
-                      next_line(ls);
-                      long long entity_a, entity_b, parametric, n = 0;
-                      ls >> entity_a >> entity_b >> parametric >> n;
-                      expect(ls);
-                      if (version < 4.05) // 4.0: "tag x y z" per line
-                        for (long long i = 0; i < n; ++i)
-                          {
-                            next_line(ls);
-                            long long tag = 0;
-                            ls >> tag;
-                            read_node(ls, tag);
-                          }
-                      else // 4.1: n tags, then n coordinate lines
-                        {
-                          std::vector<long long> tags(n);
-                          for (long long &tag : tags)
-                            {
-                              next_line(ls);
-                              ls >> tag;
-                              expect(ls);
-                            }
-                          for (const long long tag : tags)
-                            {
-                              next_line(ls);
-                              read_node(ls, tag);
-                            }
-                        }
-                    }
-                }
+              read_nodes();
             }
           else if (section == "$ELM" || section == "$Elements")
-            {
-              next_line(ls);
-              if (version < 4.)
-                {
-                  long long n = 0;
-                  ls >> n;
-                  expect(ls);
-                  for (long long i = 0; i < n; ++i)
-                    {
-                      // 1: tag type physical elementary n-nodes nodes...
-                      // 2: tag type n-tags tags... nodes...
-                      next_line(ls);
-                      long long tag  = 0;
-                      int       type = 0;
-                      ls >> tag >> type;
-                      long long skip = 0;
-                      if (version < 2.)
-                        ls >> skip >> skip >> skip;
-                      else
-                        {
-                          int n_tags = 0;
-                          ls >> n_tags;
-                          for (int t = 0; t < n_tags; ++t)
-                            ls >> skip;
-                        }
-                      expect(ls);
-                      read_element(ls, tag, type);
-                    }
-                }
-              else
-                {
-                  long long n_blocks = 0;
-                  ls >> n_blocks;
-                  expect(ls);
-                  for (long long b = 0; b < n_blocks; ++b)
-                    {
-                      // Entity tag and dim (in either order), element type,
-                      // count; then "tag nodes..." per line.
-                      next_line(ls);
-                      long long entity_a, entity_b, n = 0;
-                      int       type = 0;
-                      ls >> entity_a >> entity_b >> type >> n;
-                      expect(ls);
-                      for (long long i = 0; i < n; ++i)
-                        {
-                          next_line(ls);
-                          long long tag = 0;
-                          ls >> tag;
-                          expect(ls);
-                          read_element(ls, tag, type);
-                        }
-                    }
-                }
-            }
+            read_elements();
+          else if (section == "$Entities")
+            read_entities();
+          else if (section[0] == '$')
+            in.skip_section(section);
+          else
+            in.fail("unexpected '" + std::string(section) +
+                    "' outside a section");
         }
 
       if (n_unsupported > 0)
@@ -487,217 +730,468 @@ namespace hyperelastic
           " and points for boundary ids): mesh with simplices, first order "
           "(gmsh: no Recombine, Mesh.ElementOrder = 1), and check "
           "'Problem/Dimension'");
-      if (elements.empty())
+      if (mesh.cells.empty())
         throw InputError("mesh file '" + file_name + "' holds no " +
                          (dim == 2 ? "3-node triangles" : "4-node tetrahedra") +
                          " (gmsh element type " + std::to_string(simplex_type) +
                          "), only lower-dimensional elements: mesh the " +
                          (dim == 2 ? "surface (gmsh -2)" : "volume (gmsh -3)"));
-      GmshSimplices result;
-      for (const auto &[tag, node_tags] : elements)
+
+      for (unsigned int d = 0; d < 3; ++d)
         {
-          std::array<Point<3>, 4> x;
-          for (unsigned int k = 0; k <= dim; ++k)
-            {
-              const auto node = nodes.find(node_tags[k]);
-              if (node == nodes.end())
-                fail("element " + std::to_string(tag) + " refers to node " +
-                     std::to_string(node_tags[k]) +
-                     ", which $Nodes does not define");
-              x[k] = node->second;
-            }
-          result.tags.push_back(tag);
-          result.vertices.push_back(x);
+          mesh.lower[d] = std::numeric_limits<double>::infinity();
+          mesh.upper[d] = -std::numeric_limits<double>::infinity();
         }
-      return result;
-    }
-
-    /// Checks the cells of the gmsh file @p file_name as it lists them; see
-    /// the policy above. In 2D also that all nodes of the triangles lie in a
-    /// plane z = const, since only x and y are used.
-    template <int dim>
-    void
-    check_gmsh_cells(const std::string   &file_name,
-                     const GmshSimplices &listed,
-                     const unsigned int   n_cells_read)
-    {
-      if (listed.tags.size() != n_cells_read)
-        throw std::runtime_error("mesh file '" + file_name + "': found " +
-                                 std::to_string(listed.tags.size()) +
-                                 (dim == 2 ? " triangles" : " tetrahedra") +
-                                 " but deal.II read " +
-                                 std::to_string(n_cells_read) + " cells");
-      const std::string where = "mesh file '" + file_name + "'";
-
-      if (dim == 2)
-        {
-          Point<3> lower, upper;
+      for (const CellData<dim> &cell : mesh.cells)
+        for (const unsigned int v : cell.vertices)
           for (unsigned int d = 0; d < 3; ++d)
             {
-              lower[d] = std::numeric_limits<double>::infinity();
-              upper[d] = -std::numeric_limits<double>::infinity();
+              mesh.lower[d] = std::min(mesh.lower[d], nodes[v][d]);
+              mesh.upper[d] = std::max(mesh.upper[d], nodes[v][d]);
             }
-          for (const auto &cell : listed.vertices)
-            for (unsigned int k = 0; k <= dim; ++k)
-              for (unsigned int d = 0; d < 3; ++d)
-                {
-                  lower[d] = std::min(lower[d], cell[k][d]);
-                  upper[d] = std::max(upper[d], cell[k][d]);
-                }
-          const Tensor<1, 3> extent = upper - lower;
-          // A z-variation below 1e-8 of the mesh size changes the projected
-          // mesh by less than that: harmless rounding, not a mis-placed mesh.
-          if (extent[2] > 1e-8 * extent.norm())
-            {
-              const auto range = [&](const unsigned int d) {
-                std::ostringstream text;
-                text << std::string(1, "xyz"[d]) << " from " << lower[d]
-                     << " to " << upper[d];
-                return text.str();
-              };
-              std::string plane;
-              for (unsigned int d = 0; d < 2; ++d)
-                if (extent[d] <= 1e-8 * extent.norm())
-                  {
-                    std::ostringstream text;
-                    text << "it lies in the " << (d == 0 ? "yz" : "xz")
-                         << "-plane (all nodes have "
-                         << "xy"[d] << " = " << lower[d] << ", " << range(2)
-                         << ")";
-                    plane = text.str();
-                  }
-              if (plane.empty())
-                plane =
-                  "its nodes are not in one plane z = const (" + range(2) + ")";
-              throw InputError(
-                where + " is read as a 2D mesh, but " + plane +
-                ". A 2D mesh uses the x and y coordinates only: draw it in "
-                "the xy-plane (or rotate it there)");
-            }
-        }
-
-      std::vector<ListedSimplex<dim>> cells(listed.tags.size());
-      for (std::size_t c = 0; c < cells.size(); ++c)
+      if constexpr (dim == 3)
+        mesh.vertices = std::move(nodes);
+      else
         {
-          cells[c].number = listed.tags[c];
-          for (unsigned int k = 0; k <= dim; ++k)
-            for (unsigned int d = 0; d < dim; ++d)
-              cells[c].vertices[k][d] = listed.vertices[c][k][d];
+          mesh.vertices.reserve(nodes.size());
+          for (const Point<3> &x : nodes)
+            mesh.vertices.emplace_back(x[0], x[1]);
         }
-      check_simplices<dim>(cells,
-                           where,
-                           {"gmsh element",
-                            "gmsh elements",
-                            "(the element numbers of the file's $Elements "
-                            "section)"},
-                           /*accept_mirrored=*/true);
+      return mesh;
     }
-    template <int dim>
+
+    /// A 2D mesh must lie in a plane z = const: only x and y are used.
     void
-    read_gmsh(const std::string &file_name, Triangulation<dim> &tria)
+    check_plane(const std::string &where,
+                const Point<3>    &lower,
+                const Point<3>    &upper)
     {
-      std::ifstream in(file_name);
-      if (!in)
-        throw InputError("cannot open mesh file '" + file_name +
-                         "' (Mesh/File)");
-      // deal.II's reader handles ASCII files only; say so rather than let it
-      // fail on binary data.
-      std::string keyword, version;
-      int         file_type = 0;
-      in >> keyword;
-      if (keyword == "$MeshFormat")
-        in >> version >> file_type;
-      if (file_type != 0)
-        throw InputError(
-          "mesh file '" + file_name +
-          "' is a binary gmsh file; save it as ASCII (gmsh "
-          "option -format msh41 without -bin, or Mesh.Binary = 0)");
-      in.clear();
-      in.seekg(0);
+      const Tensor<1, 3> extent = upper - lower;
+      // A z-variation below 1e-8 of the mesh size changes the projected
+      // mesh by less than that: harmless rounding, not a mis-placed mesh.
+      if (!(extent[2] > 1e-8 * extent.norm()))
+        return;
+      const auto range = [&](const unsigned int d) {
+        std::ostringstream text;
+        text << std::string(1, "xyz"[d]) << " from " << lower[d] << " to "
+             << upper[d];
+        return text.str();
+      };
+      std::string plane;
+      for (unsigned int d = 0; d < 2; ++d)
+        if (extent[d] <= 1e-8 * extent.norm())
+          {
+            std::ostringstream text;
+            text << "it lies in the " << (d == 0 ? "yz" : "xz")
+                 << "-plane (all nodes have "
+                 << "xy"[d] << " = " << lower[d] << ", " << range(2) << ")";
+            plane = text.str();
+          }
+      if (plane.empty())
+        plane = "its nodes are not in one plane z = const (" + range(2) + ")";
+      throw InputError(where + " is read as a 2D mesh, but " + plane +
+                       ". A 2D mesh uses the x and y coordinates only: draw it "
+                       "in the xy-plane (or rotate it there)");
+    }
 
-      // Own reading first: element types deal.II would reject with a
-      // confusing list (or accept, like hexahedra), named here.
-      const GmshSimplices listed = read_gmsh_simplices<dim>(file_name);
+    // ------------------------------------------------------------------
+    // Folds, on the coarse cells of a triangulation built from positively
+    // oriented cells.
 
-      GridIn<dim> grid_in;
-      grid_in.attach_triangulation(tria);
+    /// The position of the vertex of @p cell that is not on its face
+    /// @p face.
+    template <typename CellIterator, typename FaceIterator>
+    auto
+    opposite_vertex(const CellIterator &cell, const FaceIterator &face)
+    {
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const unsigned int index   = cell->vertex_index(v);
+          bool               on_face = false;
+          for (const unsigned int k : face->vertex_indices())
+            on_face = on_face || face->vertex_index(k) == index;
+          if (!on_face)
+            return cell->vertex(v);
+        }
+      Assert(false, ExcInternalError());
+      return cell->vertex(0);
+    }
+
+    /// Whether @p cell and its neighbour across face @p f lie on the same
+    /// side of that face. Both must be non-degenerate: then the signs below
+    /// are those of their (well separated from zero) measures.
+    template <int dim>
+    bool
+    folded_across(const typename Triangulation<dim>::cell_iterator &cell,
+                  const unsigned int                                f)
+    {
+      const auto     face = cell->face(f);
+      const auto     x0   = face->vertex(0);
+      Tensor<2, dim> columns;
+      for (unsigned int k = 1; k < dim; ++k)
+        for (unsigned int d = 0; d < dim; ++d)
+          columns[d][k - 1] = face->vertex(k)[d] - x0[d];
+      const auto side = [&](const Point<dim> &p) {
+        for (unsigned int d = 0; d < dim; ++d)
+          columns[d][dim - 1] = p[d] - x0[d];
+        return determinant(columns);
+      };
+      const double a = side(opposite_vertex(cell, face));
+      const double b = side(opposite_vertex(cell->neighbor(f), face));
+      return (a > 0. && b > 0.) || (a < 0. && b < 0.);
+    }
+
+    /// The coarse cells (by index) that are inverted relative to the rest
+    /// of their connected part of the mesh, cells marked @p degenerate left
+    /// out. @p listed_negative serves to break ties.
+    template <int dim>
+    std::vector<unsigned int>
+    find_inverted_cells(const Triangulation<dim> &tria,
+                        const std::vector<bool>  &degenerate,
+                        const std::vector<bool>  &listed_negative)
+    {
+      using cell_iterator = typename Triangulation<dim>::cell_iterator;
+      // Cheap pass first: most meshes have no fold.
+      bool any_fold = false;
+      for (const auto &cell : tria.cell_iterators_on_level(0))
+        if (!degenerate[cell->index()])
+          for (const unsigned int f : cell->face_indices())
+            if (!cell->at_boundary(f) &&
+                cell->neighbor_index(f) > cell->index() &&
+                !degenerate[cell->neighbor_index(f)] &&
+                folded_across<dim>(cell, f))
+              any_fold = true;
+      if (!any_fold)
+        return {};
+
+      // Relative orientation g = +-1, kept across a face, flipped across a
+      // folded one; per connected part the minority is inverted.
+      const unsigned int        n = tria.n_cells(0);
+      std::vector<signed char>  g(n, 0);
+      std::vector<unsigned int> inverted, part;
+      for (unsigned int seed = 0; seed < n; ++seed)
+        {
+          if (degenerate[seed] || g[seed] != 0)
+            continue;
+          part.assign(1, seed);
+          g[seed] = 1;
+          for (std::size_t next = 0; next < part.size(); ++next)
+            {
+              const cell_iterator cell(&tria, 0, part[next]);
+              for (const unsigned int f : cell->face_indices())
+                {
+                  if (cell->at_boundary(f))
+                    continue;
+                  const int j = cell->neighbor_index(f);
+                  if (degenerate[j] || g[j] != 0)
+                    continue;
+                  g[j] = folded_across<dim>(cell, f) ? -g[part[next]]
+                                                     : g[part[next]];
+                  part.push_back(j);
+                }
+            }
+          std::size_t plus = 0, plus_listed_negative = 0,
+                      minus_listed_negative = 0;
+          for (const unsigned int i : part)
+            {
+              plus += g[i] > 0 ? 1 : 0;
+              (g[i] > 0 ? plus_listed_negative : minus_listed_negative) +=
+                listed_negative[i] ? 1 : 0;
+            }
+          const std::size_t minus = part.size() - plus;
+          // The minority; on a tie the part listed negatively, else the
+          // part without the seed.
+          const signed char odd = plus < minus   ? 1
+                                  : minus < plus ? -1
+                                  : plus_listed_negative > minus_listed_negative
+                                    ? 1
+                                    : -1;
+          for (const unsigned int i : part)
+            if (g[i] == odd)
+              inverted.push_back(i);
+        }
+      std::sort(inverted.begin(), inverted.end());
+      return inverted;
+    }
+
+    // ------------------------------------------------------------------
+    // The whole mesh, on the reader.
+
+    /// The serial mesh of a gmsh file, checked, with every cell positively
+    /// oriented. Returns the number of cells reoriented.
+    template <int dim>
+    std::size_t
+    build_from_gmsh(const std::string  &file_name,
+                    Triangulation<dim> &serial,
+                    MeshStatistics     &statistics)
+    {
+      Timer         timer;
+      GmshMesh<dim> mesh   = read_gmsh<dim>(file_name);
+      statistics.read_time = timer.wall_time();
+      timer.restart();
+
+      const std::string where = "mesh file '" + file_name + "'";
+      if (dim == 2)
+        check_plane(where, mesh.lower, mesh.upper);
+
+      // Zero measure and orientation as listed; negatively oriented cells
+      // reoriented as deal.II's GridIn does it (last two vertices swapped).
+      const std::size_t      n_cells = mesh.cells.size();
+      std::vector<bool>      degenerate(n_cells, false);
+      std::vector<bool>      listed_negative(n_cells, false);
+      std::vector<long long> degenerate_numbers;
+      std::size_t            n_reoriented = 0;
+      for (std::size_t c = 0; c < n_cells; ++c)
+        {
+          std::vector<unsigned int> &v       = mesh.cells[c].vertices;
+          const SimplexMeasure       measure = simplex_measure<dim>(
+            [&](const unsigned int k) -> const Point<dim>       &{
+              return mesh.vertices[v[k]];
+            });
+          if (measure.degenerate)
+            {
+              degenerate[c] = true;
+              degenerate_numbers.push_back(mesh.element_numbers[c]);
+            }
+          else if (measure.det < 0.)
+            {
+              listed_negative[c] = true;
+              std::swap(v[dim - 1], v[dim]);
+              ++n_reoriented;
+            }
+        }
+      statistics.check_time = timer.wall_time();
+      timer.restart();
+
+      const auto degenerate_message = [&]() {
+        return where + ": " +
+               cell_problems<dim>(
+                 n_cells, degenerate_numbers, {}, 0, gmsh_numbering);
+      };
       try
         {
-          grid_in.read_msh(in);
+          serial.create_triangulation(mesh.vertices, mesh.cells, mesh.boundary);
         }
       catch (const std::exception &e)
         {
-          throw InputError("cannot read mesh file '" + file_name +
-                           "' as a gmsh mesh of dimension " +
+          if (!degenerate_numbers.empty())
+            throw InputError(degenerate_message());
+          throw InputError("cannot read " + where +
+                           " as a gmsh mesh of dimension " +
                            std::to_string(dim) + ": " + exception_message(e));
         }
-      if (tria.n_active_cells() == 0)
-        throw InputError("mesh file '" + file_name +
-                         "' has no cells of dimension " + std::to_string(dim));
-      for (const auto &cell : tria.active_cell_iterators())
-        if (!cell->reference_cell().is_simplex())
-          throw InputError("mesh file '" + file_name + "': cell " +
-                           std::to_string(cell->active_cell_index()) +
-                           " is not a simplex (hyperelastic needs " +
-                           (dim == 2 ? "triangles" : "tetrahedra") + ")");
-      check_gmsh_cells<dim>(file_name, listed, tria.n_active_cells());
+      mesh.cells.clear();
+      mesh.cells.shrink_to_fit();
+      mesh.vertices.clear();
+      mesh.vertices.shrink_to_fit();
+      statistics.build_time = timer.wall_time();
+      timer.restart();
+
+      // Folds.
+      const std::vector<unsigned int> inverted =
+        find_inverted_cells(serial, degenerate, listed_negative);
+      if (!degenerate_numbers.empty() || !inverted.empty())
+        {
+          std::vector<long long> inverted_numbers;
+          std::vector<bool>      is_inverted(n_cells, false);
+          for (const unsigned int c : inverted)
+            {
+              inverted_numbers.push_back(mesh.element_numbers[c]);
+              is_inverted[c] = true;
+            }
+          std::sort(inverted_numbers.begin(), inverted_numbers.end());
+          std::sort(degenerate_numbers.begin(), degenerate_numbers.end());
+          // Does the listing tell the same story (a consistently listed
+          // mesh with a fold)? Then say it in its terms.
+          int inverted_listed = 0;
+          if (!inverted.empty())
+            {
+              const bool first = listed_negative[inverted[0]];
+              bool       same  = true;
+              for (std::size_t c = 0; c < n_cells && same; ++c)
+                if (!degenerate[c])
+                  same =
+                    listed_negative[c] == (is_inverted[c] ? first : !first);
+              if (same)
+                inverted_listed = first ? -1 : 1;
+            }
+          throw InputError(where + ": " +
+                           cell_problems<dim>(n_cells,
+                                              degenerate_numbers,
+                                              inverted_numbers,
+                                              inverted_listed,
+                                              gmsh_numbering));
+        }
+      statistics.check_time += timer.wall_time();
+      return n_reoriented;
     }
+
+    /// The generated box; its cells are checked as deal.II made them
+    /// (extreme aspect ratios can make them flat).
+    template <int dim>
+    void
+    build_box(const MeshParameters &parameters, Triangulation<dim> &serial)
+    {
+      Point<dim>                p1, p2;
+      std::vector<unsigned int> repetitions(dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          p1[d]          = parameters.lower_corner[d];
+          p2[d]          = parameters.upper_corner[d];
+          repetitions[d] = parameters.subdivisions[d];
+        }
+      GridGenerator::subdivided_hyper_rectangle_with_simplices(serial,
+                                                               repetitions,
+                                                               p1,
+                                                               p2);
+      set_box_boundary_ids(serial);
+
+      std::vector<long long> degenerate, negative;
+      for (const auto &cell : serial.active_cell_iterators())
+        {
+          const SimplexMeasure measure = simplex_measure<dim>(
+            [&](const unsigned int k) -> const Point<dim> & {
+              return cell->vertex(k);
+            });
+          if (measure.degenerate)
+            degenerate.push_back(cell->active_cell_index());
+          else if (measure.det < 0.)
+            negative.push_back(cell->active_cell_index());
+        }
+      if (!degenerate.empty())
+        throw InputError(
+          "the generated box: " +
+          cell_problems<dim>(
+            serial.n_active_cells(),
+            degenerate,
+            {},
+            0,
+            {"cell", "cells", "(deal.II's cell numbers, from 0)"}));
+      AssertThrow(negative.empty(),
+                  ExcMessage("the generated box has " +
+                             std::to_string(negative.size()) +
+                             " negatively oriented cells"));
+    }
+
+    /// What the reader tells the other ranks before the distribution.
+    struct ReaderOutcome
+    {
+      enum Status : int
+      {
+        ok,
+        input_error,
+        other_error
+      };
+      int                             status = ok;
+      std::string                     message;
+      std::vector<types::boundary_id> boundary_ids;
+      std::size_t                     global_cells     = 0;
+      std::size_t                     reoriented_cells = 0;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &status &message &boundary_ids &global_cells &reoriented_cells;
+      }
+    };
   } // namespace
 
   template <int dim>
   std::set<types::boundary_id>
   create_mesh(const MeshParameters                           &parameters,
-              parallel::fullydistributed::Triangulation<dim> &tria)
+              parallel::fullydistributed::Triangulation<dim> &tria,
+              MeshStatistics                                 *statistics)
   {
-    const MPI_Comm comm = tria.get_communicator();
-
-    // Every rank builds the same serial mesh; it is dropped at the end of this
-    // function, once each rank has extracted its own part.
-    Triangulation<dim> serial;
-    if (parameters.source == MeshSource::box)
-      {
-        Point<dim>                p1, p2;
-        std::vector<unsigned int> repetitions(dim);
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            p1[d]          = parameters.lower_corner[d];
-            p2[d]          = parameters.upper_corner[d];
-            repetitions[d] = parameters.subdivisions[d];
-          }
-        GridGenerator::subdivided_hyper_rectangle_with_simplices(serial,
-                                                                 repetitions,
-                                                                 p1,
-                                                                 p2);
-        set_box_boundary_ids(serial);
-      }
-    else
-      read_gmsh(parameters.file, serial);
-
-    // The cells deal.II made: none may be flat or negatively oriented. For a
-    // file this holds after check_gmsh_cells() unless deal.II stops
-    // reordering mirrored meshes; for the box it catches extreme aspect
-    // ratios. Every rank checks the same serial mesh, so all ranks throw.
-    check_simplices<dim>(triangulation_simplices(serial),
-                         parameters.source == MeshSource::box
-                           ? std::string("the generated box")
-                           : "mesh file '" + parameters.file +
-                               "' as read by deal.II",
-                         {"cell", "cells", "(deal.II's cell numbers, from 0)"},
-                         /*accept_mirrored=*/false);
-
-    serial.refine_global(parameters.global_refinements);
-
-    const std::vector<types::boundary_id> ids = serial.get_boundary_ids();
-
+    const MPI_Comm     comm    = tria.get_communicator();
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int reader  = 0;
+    const bool is_reader = Utilities::MPI::this_mpi_process(comm) == reader;
+
+    MeshStatistics     stats;
+    Triangulation<dim> serial; // the whole mesh, on the reader only
+    ReaderOutcome      outcome;
+    std::exception_ptr reader_exception;
+    if (is_reader)
+      {
+        stats.reader = true;
+        try
+          {
+            if (parameters.source == MeshSource::box)
+              {
+                Timer timer;
+                build_box(parameters, serial);
+                stats.read_time = timer.wall_time();
+              }
+            else
+              outcome.reoriented_cells =
+                build_from_gmsh(parameters.file, serial, stats);
+
+            Timer timer;
+            serial.refine_global(parameters.global_refinements);
+            outcome.boundary_ids = serial.get_boundary_ids();
+            if (n_ranks > 1)
+              GridTools::partition_triangulation(
+                n_ranks, serial, SparsityTools::Partitioner::metis);
+            outcome.global_cells = serial.n_active_cells();
+            stats.partition_time = timer.wall_time();
+          }
+        catch (const InputError &e)
+          {
+            outcome.status  = ReaderOutcome::input_error;
+            outcome.message = e.what();
+          }
+        catch (const std::exception &e)
+          {
+            outcome.status   = ReaderOutcome::other_error;
+            outcome.message  = exception_message(e);
+            reader_exception = std::current_exception();
+          }
+        catch (...)
+          {
+            outcome.status   = ReaderOutcome::other_error;
+            outcome.message  = "unknown exception";
+            reader_exception = std::current_exception();
+          }
+      }
+
+    // The other ranks wait here, not in the description exchange below, so
+    // that a failure of the reader reaches them as the same exception.
     if (n_ranks > 1)
-      GridTools::partition_triangulation(n_ranks,
-                                         serial,
-                                         SparsityTools::Partitioner::metis);
+      outcome = Utilities::MPI::broadcast(comm, outcome, reader);
+    if (outcome.status == ReaderOutcome::input_error)
+      throw InputError(outcome.message);
+    if (outcome.status == ReaderOutcome::other_error)
+      {
+        if (reader_exception)
+          std::rethrow_exception(reader_exception);
+        throw std::runtime_error("creating the mesh failed on MPI rank " +
+                                 std::to_string(reader) + ": " +
+                                 outcome.message);
+      }
+
+    // The reader makes and sends one description per rank, one at a time;
+    // the others receive theirs. The serial mesh moves into the function's
+    // triangulation and is freed when it returns.
+    Timer timer;
+    stats.serial_cells     = is_reader ? serial.n_active_cells() : 0;
     const auto description = TriangulationDescription::Utilities::
-      create_description_from_triangulation(serial, comm);
+      create_description_from_triangulation_in_groups<dim, dim>(
+        [&serial](Triangulation<dim> &t) { t = std::move(serial); },
+        [](Triangulation<dim> &, const MPI_Comm &, const unsigned int) {
+          // partitioned above, before the outcome was broadcast
+        },
+        comm,
+        n_ranks);
+    stats.description_coarse_cells = description.coarse_cells.size();
     tria.create_triangulation(description);
-    return std::set<types::boundary_id>(ids.begin(), ids.end());
+    stats.distribute_time  = timer.wall_time();
+    stats.global_cells     = outcome.global_cells;
+    stats.reoriented_cells = outcome.reoriented_cells;
+    if (statistics)
+      *statistics = stats;
+    return std::set<types::boundary_id>(outcome.boundary_ids.begin(),
+                                        outcome.boundary_ids.end());
   }
 
   template void
@@ -706,8 +1200,10 @@ namespace hyperelastic
   set_box_boundary_ids(Triangulation<3> &);
   template std::set<types::boundary_id>
   create_mesh(const MeshParameters &,
-              parallel::fullydistributed::Triangulation<2> &);
+              parallel::fullydistributed::Triangulation<2> &,
+              MeshStatistics *);
   template std::set<types::boundary_id>
   create_mesh(const MeshParameters &,
-              parallel::fullydistributed::Triangulation<3> &);
+              parallel::fullydistributed::Triangulation<3> &,
+              MeshStatistics *);
 } // namespace hyperelastic

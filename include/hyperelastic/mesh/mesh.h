@@ -1,7 +1,7 @@
-// Mesh creation: a generated box of simplices or a gmsh file, refined, then
-// partitioned with METIS and handed to a fully distributed triangulation, so
-// that after creation every rank stores only its own cells (plus a ghost
-// layer).
+// Mesh creation: a generated box of simplices or a gmsh file, read, checked,
+// refined and partitioned with METIS on one rank (the reader, rank 0); every
+// other rank receives only the description of its own cells (plus a ghost
+// layer) and never holds the whole mesh.
 #pragma once
 
 #include <deal.II/base/types.h>
@@ -9,21 +9,54 @@
 
 #include <hyperelastic/mesh/mesh_parameters.h>
 
+#include <cstddef>
 #include <set>
 
 namespace hyperelastic
 {
+  /// What create_mesh() did on this rank (for tests and benchmarks).
+  struct MeshStatistics
+  {
+    /// Whether this rank read (or generated) and partitioned the mesh.
+    bool reader = false;
+    /// Active cells of the whole refined mesh this rank built: the whole mesh
+    /// on the reader, 0 elsewhere.
+    std::size_t serial_cells = 0;
+    /// Coarse cells of the description this rank received (or made).
+    std::size_t description_coarse_cells = 0;
+    /// Active cells of the whole refined mesh (on every rank).
+    std::size_t global_cells = 0;
+    /// Input cells listed with negative orientation, whose vertex order was
+    /// reversed before the mesh was built (on every rank).
+    std::size_t reoriented_cells = 0;
+    /// Wall times on the reader (0 elsewhere), in seconds: reading (or
+    /// generating), checking, building the serial triangulation, refining and
+    /// partitioning; and, on every rank, the distribution (descriptions made
+    /// and sent, or received, and the distributed triangulation built).
+    double read_time = 0., check_time = 0., build_time = 0.,
+           partition_time = 0., distribute_time = 0.;
+  };
+
   /// Builds @p tria from the scene's mesh section and returns the boundary ids
-  /// the whole mesh has. Collective; throws InputError for unreadable or
-  /// unsuitable meshes, among them meshes with cells of zero area or volume,
-  /// with inverted cells (orientation opposite to the rest of the mesh; a
-  /// mesh whose cells are all negatively oriented is accepted) and 2D meshes
-  /// whose nodes do not lie in a plane z = const. The messages list the
-  /// offending cells by their gmsh element numbers.
+  /// the whole mesh has. Collective. Rank 0 of the triangulation's
+  /// communicator reads (or generates) the mesh, checks, refines and
+  /// partitions it; the others wait for the outcome, so that an error found
+  /// by the reader is thrown as the same InputError on every rank.
+  ///
+  /// A gmsh file may list the vertices of its cells in any order: cells
+  /// listed with negative orientation are reoriented (two vertices swapped).
+  /// Rejected with InputError: unreadable files, cells of zero area or
+  /// volume, folded meshes (two cells on the same side of their shared face,
+  /// as when a node is pushed through a face) and 2D meshes whose nodes do
+  /// not lie in a plane z = const. The messages list the offending cells by
+  /// their gmsh element numbers.
+  ///
+  /// @p statistics, if given, receives what this rank did.
   template <int dim>
   std::set<dealii::types::boundary_id>
   create_mesh(const MeshParameters &parameters,
-              dealii::parallel::fullydistributed::Triangulation<dim> &tria);
+              dealii::parallel::fullydistributed::Triangulation<dim> &tria,
+              MeshStatistics *statistics = nullptr);
 
   /// Boundary ids of a box: 2 d on the face x_d = min, 2 d + 1 on x_d = max.
   /// Set from face centres since deal.II 9.4 cannot colorize simplex boxes.
