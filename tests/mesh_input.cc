@@ -452,6 +452,8 @@ namespace
                                       stats.check_time,
                                       stats.build_time,
                                       stats.partition_time,
+                                      stats.wait_time,
+                                      stats.describe_time,
                                       stats.distribute_time,
                                       double(stats.serial_cells),
                                       double(owned),
@@ -466,18 +468,19 @@ namespace
                   << stats.global_cells << " cells, " << stats.reoriented_cells
                   << " reoriented\n"
                   << "rank  total[s]  read  check  build  refine+partition  "
-                     "distribute  serial_cells  owned  ghost  active  "
+                     "wait  describe  distribute  serial_cells  owned  ghost  "
+                     "active  "
                      "VmHWM_before[MB]  VmHWM_after[MB]\n";
         for (unsigned int r = 0; r < rows.size(); ++r)
           {
             std::cout << r << std::fixed << std::setprecision(2);
-            for (unsigned int k = 0; k < 6; ++k)
+            for (unsigned int k = 0; k < 8; ++k)
               std::cout << "  " << rows[r][k];
             std::cout << std::setprecision(0);
-            for (unsigned int k = 6; k < 10; ++k)
+            for (unsigned int k = 8; k < 12; ++k)
               std::cout << "  " << rows[r][k];
-            std::cout << "  " << rows[r][10] / 1024. << "  "
-                      << rows[r][11] / 1024. << std::endl;
+            std::cout << "  " << rows[r][12] / 1024. << "  "
+                      << rows[r][13] / 1024. << std::endl;
           }
       }
     return 0;

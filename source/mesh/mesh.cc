@@ -8,6 +8,8 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/grid/tria_description.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/mesh.h>
@@ -18,6 +20,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <fstream>
@@ -27,6 +30,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <type_traits>
 #include <unordered_map>
 #include <utility>
@@ -445,8 +449,12 @@ namespace hyperelastic
     {
       std::vector<Point<dim>>    vertices;
       std::vector<CellData<dim>> cells;
-      SubCellData                boundary;
-      std::vector<long long>     element_numbers; ///< of cells
+      /// Faces with boundary ids (2D: lines, 3D: triangles) and their
+      /// element numbers. (Lines in 3D are read and dropped: only faces
+      /// carry boundary ids in a distributed triangulation.)
+      SubCellData            boundary;
+      std::vector<long long> boundary_numbers;
+      std::vector<long long> element_numbers; ///< of cells
       /// Bounds of the nodes of the cells, in all three coordinates.
       Point<3> lower, upper;
     };
@@ -592,13 +600,17 @@ namespace hyperelastic
               mesh.cells.push_back(std::move(cell));
               mesh.element_numbers.push_back(tag);
             }
-          else if (type == 1) // line: boundary id of an edge
+          else if (type == 1) // line: a face in 2D
             {
               CellData<1> line;
               for (unsigned int k = 0; k < 2; ++k)
                 line.vertices[k] = vertex(tag, in.number<long long>());
               line.boundary_id = physical;
-              mesh.boundary.boundary_lines.push_back(line);
+              if (dim == 2)
+                {
+                  mesh.boundary.boundary_lines.push_back(line);
+                  mesh.boundary_numbers.push_back(tag);
+                }
             }
           else if (dim == 3 && type == 2) // triangle: boundary id of a face
             {
@@ -607,6 +619,7 @@ namespace hyperelastic
                 triangle.vertices[k] = vertex(tag, in.number<long long>());
               triangle.boundary_id = physical;
               mesh.boundary.boundary_quads.push_back(std::move(triangle));
+              mesh.boundary_numbers.push_back(tag);
             }
           else if (type != 15) // points carry nothing for dim > 1
             {
@@ -795,78 +808,225 @@ namespace hyperelastic
     }
 
     // ------------------------------------------------------------------
-    // Folds, on the coarse cells of a triangulation built from positively
-    // oriented cells.
+    // The checked cell list of a gmsh file, with face neighbours and
+    // boundary ids, from which the descriptions of the ranks' parts are made
+    // directly, without a serial triangulation (unless the mesh is to be
+    // refined).
 
-    /// The position of the vertex of @p cell that is not on its face
-    /// @p face.
-    template <typename CellIterator, typename FaceIterator>
-    auto
-    opposite_vertex(const CellIterator &cell, const FaceIterator &face)
-    {
-      for (const unsigned int v : cell->vertex_indices())
-        {
-          const unsigned int index   = cell->vertex_index(v);
-          bool               on_face = false;
-          for (const unsigned int k : face->vertex_indices())
-            on_face = on_face || face->vertex_index(k) == index;
-          if (!on_face)
-            return cell->vertex(v);
-        }
-      Assert(false, ExcInternalError());
-      return cell->vertex(0);
-    }
-
-    /// Whether @p cell and its neighbour across face @p f lie on the same
-    /// side of that face. Both must be non-degenerate: then the signs below
-    /// are those of their (well separated from zero) measures.
     template <int dim>
-    bool
-    folded_across(const typename Triangulation<dim>::cell_iterator &cell,
-                  const unsigned int                                f)
+    struct CheckedMesh
     {
-      const auto     face = cell->face(f);
-      const auto     x0   = face->vertex(0);
-      Tensor<2, dim> columns;
-      for (unsigned int k = 1; k < dim; ++k)
-        for (unsigned int d = 0; d < dim; ++d)
-          columns[d][k - 1] = face->vertex(k)[d] - x0[d];
-      const auto side = [&](const Point<dim> &p) {
-        for (unsigned int d = 0; d < dim; ++d)
-          columns[d][dim - 1] = p[d] - x0[d];
-        return determinant(columns);
+      std::vector<Point<dim>>    vertices;
+      std::vector<CellData<dim>> cells; ///< positively oriented
+      SubCellData                boundary;
+      std::vector<long long>     element_numbers;
+      /// Per cell c and face f (deal.II's numbering of the faces of a
+      /// simplex), at c (dim + 1) + f: the neighbour's index, or -1 on the
+      /// boundary, and the boundary id (internal_face_boundary_id inside).
+      std::vector<int>                neighbors;
+      std::vector<types::boundary_id> face_ids;
+      std::size_t                     n_reoriented = 0;
+    };
+
+    /// Face neighbours and boundary ids of @p mesh.cells, from the faces'
+    /// vertex sets. Throws InputError for faces of more than two cells and
+    /// for boundary ids given to faces inside the mesh.
+    template <int dim>
+    void
+    find_faces(CheckedMesh<dim>             &mesh,
+               const std::vector<long long> &boundary_numbers,
+               const std::string            &where)
+    {
+      constexpr unsigned int n_faces = dim + 1;
+      const ReferenceCell    simplex = ReferenceCells::get_simplex<dim>();
+      struct Face
+      {
+        std::array<unsigned int, dim> key; ///< sorted vertex indices
+        unsigned int                  cell;
+        unsigned int                  face;
       };
-      const double a = side(opposite_vertex(cell, face));
-      const double b = side(opposite_vertex(cell->neighbor(f), face));
-      return (a > 0. && b > 0.) || (a < 0. && b < 0.);
+      const std::size_t n_cells = mesh.cells.size();
+      std::vector<Face> faces;
+      faces.reserve(n_cells * n_faces);
+      for (unsigned int c = 0; c < n_cells; ++c)
+        for (unsigned int f = 0; f < n_faces; ++f)
+          {
+            Face face{{}, c, f};
+            for (unsigned int k = 0; k < dim; ++k)
+              face.key[k] =
+                mesh.cells[c].vertices[simplex.face_to_cell_vertices(f, k, 1)];
+            std::sort(face.key.begin(), face.key.end());
+            faces.push_back(face);
+          }
+      std::sort(faces.begin(), faces.end(), [](const Face &a, const Face &b) {
+        return a.key < b.key;
+      });
+
+      mesh.neighbors.assign(n_cells * n_faces, -1);
+      mesh.face_ids.assign(n_cells * n_faces,
+                           numbers::internal_face_boundary_id);
+      std::vector<long long> crowded;
+      std::size_t            n_crowded = 0;
+      for (std::size_t i = 0; i < faces.size();)
+        {
+          std::size_t j = i + 1;
+          while (j < faces.size() && faces[j].key == faces[i].key)
+            ++j;
+          if (j == i + 1)
+            mesh.face_ids[faces[i].cell * n_faces + faces[i].face] = 0;
+          else if (j == i + 2)
+            {
+              mesh.neighbors[faces[i].cell * n_faces + faces[i].face] =
+                faces[i + 1].cell;
+              mesh.neighbors[faces[i + 1].cell * n_faces + faces[i + 1].face] =
+                faces[i].cell;
+            }
+          else
+            {
+              ++n_crowded;
+              for (std::size_t k = i; k < j; ++k)
+                crowded.push_back(mesh.element_numbers[faces[k].cell]);
+            }
+          i = j;
+        }
+      if (n_crowded > 0)
+        {
+          std::sort(crowded.begin(), crowded.end());
+          crowded.erase(std::unique(crowded.begin(), crowded.end()),
+                        crowded.end());
+          throw InputError(
+            where + ": " + std::to_string(n_crowded) + " " +
+            (dim == 2 ? "edge" : "face") + (n_crowded == 1 ? " is" : "s are") +
+            " shared by more than two cells (the mesh is not a manifold "
+            "there, or has duplicated cells): gmsh elements " +
+            list_numbers(crowded) + " " + gmsh_numbering.note);
+        }
+
+      // Boundary ids from the lower-dimensional elements; a later element
+      // of the same face wins.
+      std::vector<long long> inside;
+      const auto             assign = [&](const auto &objects) {
+        for (std::size_t o = 0; o < objects.size(); ++o)
+          {
+            Face key{{}, 0, 0};
+            if (objects[o].vertices.size() != dim)
+              continue;
+            std::copy(objects[o].vertices.begin(),
+                      objects[o].vertices.end(),
+                      key.key.begin());
+            std::sort(key.key.begin(), key.key.end());
+            const auto found =
+              std::lower_bound(faces.begin(),
+                               faces.end(),
+                               key,
+                               [](const Face &a, const Face &b) {
+                                 return a.key < b.key;
+                               });
+            if (found == faces.end() || found->key != key.key)
+              continue; // not a face of the mesh: ignored, as by deal.II
+            const std::size_t at = found->cell * n_faces + found->face;
+            if (mesh.neighbors[at] >= 0)
+              inside.push_back(boundary_numbers[o]);
+            else
+              mesh.face_ids[at] = objects[o].boundary_id;
+          }
+      };
+      if constexpr (dim == 2)
+        assign(mesh.boundary.boundary_lines);
+      else
+        assign(mesh.boundary.boundary_quads);
+      if (!inside.empty())
+        throw InputError(
+          where + ": " + std::to_string(inside.size()) + " " +
+          (dim == 2 ? "line" : "triangle") +
+          (inside.size() == 1 ? " element lies" : " elements lie") +
+          " inside the mesh, on " + (dim == 2 ? "edges" : "faces") +
+          " between two cells, where a physical tag cannot be a boundary id: "
+          "gmsh " +
+          (inside.size() == 1 ? "element " : "elements ") +
+          list_numbers(inside) + " " + gmsh_numbering.note);
     }
 
-    /// The coarse cells (by index) that are inverted relative to the rest
-    /// of their connected part of the mesh, cells marked @p degenerate left
-    /// out. @p listed_negative serves to break ties.
+    template <int dim>
+    class FoldTest
+    {
+    public:
+      explicit FoldTest(const CheckedMesh<dim> &mesh)
+          : mesh(mesh)
+      {
+      }
+
+      /// Whether the face neighbours @p a and @p b lie on the same side of
+      /// their shared face. Both must be non-degenerate: then the signs
+      /// below are those of their measures, well separated from zero.
+      bool
+      operator()(const unsigned int a, const unsigned int b) const
+      {
+        const std::vector<unsigned int> &va = mesh.cells[a].vertices;
+        const std::vector<unsigned int> &vb = mesh.cells[b].vertices;
+        const auto                       in = [](const unsigned int               v,
+                           const std::vector<unsigned int> &list) {
+          return std::find(list.begin(), list.end(), v) != list.end();
+        };
+        std::array<unsigned int, dim> face;
+        unsigned int                  n_shared = 0;
+        unsigned int                  p = numbers::invalid_unsigned_int, q = p;
+        for (const unsigned int v : va)
+          if (!in(v, vb))
+            p = v;
+          else if (n_shared < dim)
+            face[n_shared++] = v;
+        for (const unsigned int v : vb)
+          if (!in(v, va))
+            q = v;
+        if (n_shared != dim || p == numbers::invalid_unsigned_int ||
+            q == numbers::invalid_unsigned_int)
+          return false; // not face neighbours
+        Tensor<2, dim>    columns;
+        const Point<dim> &x0 = mesh.vertices[face[0]];
+        for (unsigned int k = 1; k < dim; ++k)
+          for (unsigned int d = 0; d < dim; ++d)
+            columns[d][k - 1] = mesh.vertices[face[k]][d] - x0[d];
+        const auto side = [&](const unsigned int v) {
+          for (unsigned int d = 0; d < dim; ++d)
+            columns[d][dim - 1] = mesh.vertices[v][d] - x0[d];
+          return determinant(columns);
+        };
+        const double sp = side(p), sq = side(q);
+        return (sp > 0. && sq > 0.) || (sp < 0. && sq < 0.);
+      }
+
+    private:
+      const CheckedMesh<dim> &mesh;
+    };
+
+    /// The cells (by index) that are inverted relative to the rest of their
+    /// connected part of the mesh, cells marked @p degenerate left out.
+    /// @p listed_negative serves to break ties.
     template <int dim>
     std::vector<unsigned int>
-    find_inverted_cells(const Triangulation<dim> &tria,
-                        const std::vector<bool>  &degenerate,
-                        const std::vector<bool>  &listed_negative)
+    find_inverted_cells(const CheckedMesh<dim>  &mesh,
+                        const std::vector<bool> &degenerate,
+                        const std::vector<bool> &listed_negative)
     {
-      using cell_iterator = typename Triangulation<dim>::cell_iterator;
+      constexpr unsigned int n_faces = dim + 1;
+      const unsigned int     n       = mesh.cells.size();
+      const FoldTest<dim>    folded(mesh);
       // Cheap pass first: most meshes have no fold.
       bool any_fold = false;
-      for (const auto &cell : tria.cell_iterators_on_level(0))
-        if (!degenerate[cell->index()])
-          for (const unsigned int f : cell->face_indices())
-            if (!cell->at_boundary(f) &&
-                cell->neighbor_index(f) > cell->index() &&
-                !degenerate[cell->neighbor_index(f)] &&
-                folded_across<dim>(cell, f))
-              any_fold = true;
+      for (unsigned int c = 0; c < n && !any_fold; ++c)
+        if (!degenerate[c])
+          for (unsigned int f = 0; f < n_faces; ++f)
+            {
+              const int j = mesh.neighbors[c * n_faces + f];
+              if (j > static_cast<int>(c) && !degenerate[j] && folded(c, j))
+                any_fold = true;
+            }
       if (!any_fold)
         return {};
 
       // Relative orientation g = +-1, kept across a face, flipped across a
       // folded one; per connected part the minority is inverted.
-      const unsigned int        n = tria.n_cells(0);
       std::vector<signed char>  g(n, 0);
       std::vector<unsigned int> inverted, part;
       for (unsigned int seed = 0; seed < n; ++seed)
@@ -877,16 +1037,13 @@ namespace hyperelastic
           g[seed] = 1;
           for (std::size_t next = 0; next < part.size(); ++next)
             {
-              const cell_iterator cell(&tria, 0, part[next]);
-              for (const unsigned int f : cell->face_indices())
+              const unsigned int c = part[next];
+              for (unsigned int f = 0; f < n_faces; ++f)
                 {
-                  if (cell->at_boundary(f))
+                  const int j = mesh.neighbors[c * n_faces + f];
+                  if (j < 0 || degenerate[j] || g[j] != 0)
                     continue;
-                  const int j = cell->neighbor_index(f);
-                  if (degenerate[j] || g[j] != 0)
-                    continue;
-                  g[j] = folded_across<dim>(cell, f) ? -g[part[next]]
-                                                     : g[part[next]];
+                  g[j] = folded(c, j) ? -g[c] : g[c];
                   part.push_back(j);
                 }
             }
@@ -914,25 +1071,27 @@ namespace hyperelastic
       return inverted;
     }
 
-    // ------------------------------------------------------------------
-    // The whole mesh, on the reader.
-
-    /// The serial mesh of a gmsh file, checked, with every cell positively
-    /// oriented. Returns the number of cells reoriented.
+    /// The mesh of a gmsh file, checked, with every cell positively
+    /// oriented, and its faces.
     template <int dim>
-    std::size_t
-    build_from_gmsh(const std::string  &file_name,
-                    Triangulation<dim> &serial,
-                    MeshStatistics     &statistics)
+    CheckedMesh<dim>
+    read_and_check_gmsh(const std::string &file_name,
+                        MeshStatistics    &statistics)
     {
       Timer         timer;
-      GmshMesh<dim> mesh   = read_gmsh<dim>(file_name);
+      GmshMesh<dim> file   = read_gmsh<dim>(file_name);
       statistics.read_time = timer.wall_time();
       timer.restart();
 
       const std::string where = "mesh file '" + file_name + "'";
       if (dim == 2)
-        check_plane(where, mesh.lower, mesh.upper);
+        check_plane(where, file.lower, file.upper);
+
+      CheckedMesh<dim> mesh;
+      mesh.vertices        = std::move(file.vertices);
+      mesh.cells           = std::move(file.cells);
+      mesh.boundary        = std::move(file.boundary);
+      mesh.element_numbers = std::move(file.element_numbers);
 
       // Zero measure and orientation as listed; negatively oriented cells
       // reoriented as deal.II's GridIn does it (last two vertices swapped).
@@ -940,7 +1099,6 @@ namespace hyperelastic
       std::vector<bool>      degenerate(n_cells, false);
       std::vector<bool>      listed_negative(n_cells, false);
       std::vector<long long> degenerate_numbers;
-      std::size_t            n_reoriented = 0;
       for (std::size_t c = 0; c < n_cells; ++c)
         {
           std::vector<unsigned int> &v       = mesh.cells[c].vertices;
@@ -957,39 +1115,16 @@ namespace hyperelastic
             {
               listed_negative[c] = true;
               std::swap(v[dim - 1], v[dim]);
-              ++n_reoriented;
+              ++mesh.n_reoriented;
             }
         }
-      statistics.check_time = timer.wall_time();
-      timer.restart();
 
-      const auto degenerate_message = [&]() {
-        return where + ": " +
-               cell_problems<dim>(
-                 n_cells, degenerate_numbers, {}, 0, gmsh_numbering);
-      };
-      try
-        {
-          serial.create_triangulation(mesh.vertices, mesh.cells, mesh.boundary);
-        }
-      catch (const std::exception &e)
-        {
-          if (!degenerate_numbers.empty())
-            throw InputError(degenerate_message());
-          throw InputError("cannot read " + where +
-                           " as a gmsh mesh of dimension " +
-                           std::to_string(dim) + ": " + exception_message(e));
-        }
-      mesh.cells.clear();
-      mesh.cells.shrink_to_fit();
-      mesh.vertices.clear();
-      mesh.vertices.shrink_to_fit();
+      find_faces(mesh, file.boundary_numbers, where);
       statistics.build_time = timer.wall_time();
-      timer.restart();
 
       // Folds.
       const std::vector<unsigned int> inverted =
-        find_inverted_cells(serial, degenerate, listed_negative);
+        find_inverted_cells(mesh, degenerate, listed_negative);
       if (!degenerate_numbers.empty() || !inverted.empty())
         {
           std::vector<long long> inverted_numbers;
@@ -1022,8 +1157,123 @@ namespace hyperelastic
                                               inverted_listed,
                                               gmsh_numbering));
         }
-      statistics.check_time += timer.wall_time();
-      return n_reoriented;
+      statistics.check_time = timer.wall_time();
+      return mesh;
+    }
+
+    /// METIS partition of the cells of @p mesh into @p n_parts, computed
+    /// as GridTools::partition_triangulation() does for a triangulation of
+    /// these cells (the same graph of face neighbours, hence the same
+    /// partition).
+    template <int dim>
+    std::vector<unsigned int>
+    partition_cells(const CheckedMesh<dim> &mesh, const unsigned int n_parts)
+    {
+      const unsigned int        n = mesh.cells.size();
+      std::vector<unsigned int> owner(n, 0);
+      if (n_parts == 1)
+        return owner;
+      // Each row: the cell itself and its face neighbours (the sparsity
+      // pattern sorts the columns, as when copied from the
+      // DynamicSparsityPattern that GridTools builds).
+      std::vector<unsigned int> row_lengths(n, 1);
+      for (unsigned int c = 0; c < n; ++c)
+        for (unsigned int f = 0; f <= dim; ++f)
+          row_lengths[c] += mesh.neighbors[c * (dim + 1) + f] >= 0 ? 1 : 0;
+      SparsityPattern pattern(n, n, row_lengths);
+      for (unsigned int c = 0; c < n; ++c)
+        {
+          pattern.add(c, c);
+          for (unsigned int f = 0; f <= dim; ++f)
+            {
+              const int j = mesh.neighbors[c * (dim + 1) + f];
+              if (j >= 0)
+                pattern.add(c, j);
+            }
+        }
+      pattern.compress();
+      SparsityTools::partition(pattern,
+                               std::vector<unsigned int>(),
+                               n_parts,
+                               owner,
+                               SparsityTools::Partitioner::metis);
+      return owner;
+    }
+
+    /// The description of the part of rank @p rank: its cells and the
+    /// ghost layer (every cell with a vertex of one of its cells), as
+    /// TriangulationDescription::Utilities::
+    /// create_description_from_triangulation() makes it from a serial
+    /// triangulation of these cells that is not refined.
+    template <int dim>
+    TriangulationDescription::Description<dim, dim>
+    describe_part(const CheckedMesh<dim>          &mesh,
+                  const std::vector<unsigned int> &owner,
+                  const unsigned int               rank,
+                  const MPI_Comm                   comm)
+    {
+      constexpr unsigned int n_faces = dim + 1;
+      const unsigned int     n       = mesh.cells.size();
+      std::vector<char>      near(mesh.vertices.size(), 0);
+      for (unsigned int c = 0; c < n; ++c)
+        if (owner[c] == rank)
+          for (const unsigned int v : mesh.cells[c].vertices)
+            near[v] = 1;
+      std::vector<unsigned int> relevant;
+      std::vector<unsigned int> local(mesh.vertices.size(),
+                                      numbers::invalid_unsigned_int);
+      for (unsigned int c = 0; c < n; ++c)
+        {
+          bool is_relevant = false;
+          for (const unsigned int v : mesh.cells[c].vertices)
+            is_relevant = is_relevant || near[v] != 0;
+          if (is_relevant)
+            {
+              relevant.push_back(c);
+              for (const unsigned int v : mesh.cells[c].vertices)
+                local[v] = 0;
+            }
+        }
+
+      TriangulationDescription::Description<dim, dim> description;
+      description.comm = comm;
+      description.settings =
+        TriangulationDescription::Settings::default_setting;
+      description.smoothing = Triangulation<dim>::none;
+      unsigned int n_local  = 0;
+      for (unsigned int v = 0; v < mesh.vertices.size(); ++v)
+        if (local[v] == 0)
+          {
+            local[v] = n_local++;
+            description.coarse_cell_vertices.push_back(mesh.vertices[v]);
+          }
+      description.coarse_cells.reserve(relevant.size());
+      description.coarse_cell_index_to_coarse_cell_id.reserve(relevant.size());
+      description.cell_infos.resize(1);
+      description.cell_infos[0].reserve(relevant.size());
+      for (const unsigned int c : relevant)
+        {
+          CellData<dim> cell(dim + 1);
+          for (unsigned int k = 0; k <= dim; ++k)
+            cell.vertices[k] = local[mesh.cells[c].vertices[k]];
+          cell.material_id = mesh.cells[c].material_id;
+          cell.manifold_id = numbers::flat_manifold_id;
+          description.coarse_cells.push_back(std::move(cell));
+          description.coarse_cell_index_to_coarse_cell_id.push_back(c);
+
+          TriangulationDescription::CellData<dim> info;
+          info.id = CellId(c, std::vector<std::uint8_t>()).to_binary<dim>();
+          info.subdomain_id       = owner[c];
+          info.level_subdomain_id = 0;
+          info.manifold_id        = numbers::flat_manifold_id;
+          info.manifold_line_ids.fill(numbers::flat_manifold_id);
+          info.manifold_quad_ids.fill(numbers::flat_manifold_id);
+          for (unsigned int f = 0; f < n_faces; ++f)
+            if (mesh.neighbors[c * n_faces + f] < 0)
+              info.boundary_ids.emplace_back(f, mesh.face_ids[c * n_faces + f]);
+          description.cell_infos[0].push_back(std::move(info));
+        }
+      return description;
     }
 
     /// The generated box; its cells are checked as deal.II made them
@@ -1073,6 +1323,59 @@ namespace hyperelastic
                              " negatively oriented cells"));
     }
 
+    // ------------------------------------------------------------------
+    // Messages from the reader: tags of their own, on the triangulation's
+    // communicator.
+    constexpr int outcome_tag = 20151, description_tag = 20152;
+
+    void
+    send(const std::vector<char> &buffer,
+         const unsigned int       destination,
+         const int                tag,
+         const MPI_Comm           comm)
+    {
+      AssertThrow(buffer.size() <=
+                    static_cast<std::size_t>(std::numeric_limits<int>::max()),
+                  ExcMessage("a mesh message of " +
+                             std::to_string(buffer.size()) +
+                             " bytes is too large for one MPI message: use "
+                             "more ranks"));
+      const int ierr = MPI_Send(buffer.data(),
+                                static_cast<int>(buffer.size()),
+                                MPI_CHAR,
+                                destination,
+                                tag,
+                                comm);
+      AssertThrowMPI(ierr);
+    }
+
+    /// The message of @p tag from @p source. Polls, sleeping in between,
+    /// instead of blocking in MPI: Open MPI spins while it blocks, and a
+    /// rank waiting for the reader would take a core from it on a node
+    /// shared with other jobs or with more ranks than cores.
+    std::vector<char>
+    receive(const unsigned int source, const int tag, const MPI_Comm comm)
+    {
+      std::chrono::microseconds pause(20);
+      MPI_Status                status;
+      for (int found = 0;;)
+        {
+          const int ierr = MPI_Iprobe(source, tag, comm, &found, &status);
+          AssertThrowMPI(ierr);
+          if (found)
+            break;
+          std::this_thread::sleep_for(pause);
+          pause = std::min(2 * pause, std::chrono::microseconds(2000));
+        }
+      int size = 0;
+      MPI_Get_count(&status, MPI_CHAR, &size);
+      std::vector<char> buffer(size);
+      const int         ierr = MPI_Recv(
+        buffer.data(), size, MPI_CHAR, source, tag, comm, MPI_STATUS_IGNORE);
+      AssertThrowMPI(ierr);
+      return buffer;
+    }
+
     /// What the reader tells the other ranks before the distribution.
     struct ReaderOutcome
     {
@@ -1108,8 +1411,15 @@ namespace hyperelastic
     const unsigned int reader  = 0;
     const bool is_reader = Utilities::MPI::this_mpi_process(comm) == reader;
 
-    MeshStatistics     stats;
-    Triangulation<dim> serial; // the whole mesh, on the reader only
+    // The whole mesh, on the reader only: a file's checked list of cells,
+    // from which the parts are described directly, or (for a box, or a
+    // file to be refined) a serial triangulation.
+    MeshStatistics            stats;
+    CheckedMesh<dim>          mesh;
+    std::vector<unsigned int> owner; // of each cell of mesh
+    Triangulation<dim>        serial;
+    const bool from_cells = parameters.source == MeshSource::file &&
+                            parameters.global_refinements == 0;
     ReaderOutcome      outcome;
     std::exception_ptr reader_exception;
     if (is_reader)
@@ -1124,16 +1434,50 @@ namespace hyperelastic
                 stats.read_time = timer.wall_time();
               }
             else
-              outcome.reoriented_cells =
-                build_from_gmsh(parameters.file, serial, stats);
+              {
+                mesh = read_and_check_gmsh<dim>(parameters.file, stats);
+                outcome.reoriented_cells = mesh.n_reoriented;
+              }
+            if (!from_cells && parameters.source == MeshSource::file)
+              {
+                Timer timer;
+                try
+                  {
+                    serial.create_triangulation(mesh.vertices,
+                                                mesh.cells,
+                                                mesh.boundary);
+                  }
+                catch (const std::exception &e)
+                  {
+                    throw InputError(
+                      "cannot read mesh file '" + parameters.file +
+                      "' as a gmsh mesh of dimension " + std::to_string(dim) +
+                      ": " + exception_message(e));
+                  }
+                mesh = CheckedMesh<dim>();
+                stats.build_time += timer.wall_time();
+              }
 
             Timer timer;
-            serial.refine_global(parameters.global_refinements);
-            outcome.boundary_ids = serial.get_boundary_ids();
-            if (n_ranks > 1)
-              GridTools::partition_triangulation(
-                n_ranks, serial, SparsityTools::Partitioner::metis);
-            outcome.global_cells = serial.n_active_cells();
+            if (from_cells)
+              {
+                owner = partition_cells(mesh, n_ranks);
+                std::set<types::boundary_id> ids;
+                for (std::size_t i = 0; i < mesh.neighbors.size(); ++i)
+                  if (mesh.neighbors[i] < 0)
+                    ids.insert(mesh.face_ids[i]);
+                outcome.boundary_ids.assign(ids.begin(), ids.end());
+                outcome.global_cells = mesh.cells.size();
+              }
+            else
+              {
+                serial.refine_global(parameters.global_refinements);
+                outcome.boundary_ids = serial.get_boundary_ids();
+                if (n_ranks > 1)
+                  GridTools::partition_triangulation(
+                    n_ranks, serial, SparsityTools::Partitioner::metis);
+                outcome.global_cells = serial.n_active_cells();
+              }
             stats.partition_time = timer.wall_time();
           }
         catch (const InputError &e)
@@ -1155,10 +1499,23 @@ namespace hyperelastic
           }
       }
 
-    // The other ranks wait here, not in the description exchange below, so
-    // that a failure of the reader reaches them as the same exception.
+    // The other ranks wait for the outcome first, so that a failure of the
+    // reader reaches them as the same exception.
+    Timer timer;
     if (n_ranks > 1)
-      outcome = Utilities::MPI::broadcast(comm, outcome, reader);
+      {
+        if (is_reader)
+          {
+            const std::vector<char> buffer = Utilities::pack(outcome, false);
+            for (unsigned int r = 0; r < n_ranks; ++r)
+              if (r != reader)
+                send(buffer, r, outcome_tag, comm);
+          }
+        else
+          outcome =
+            Utilities::unpack<ReaderOutcome>(receive(reader, outcome_tag, comm),
+                                             false);
+      }
     if (outcome.status == ReaderOutcome::input_error)
       throw InputError(outcome.message);
     if (outcome.status == ReaderOutcome::other_error)
@@ -1170,19 +1527,43 @@ namespace hyperelastic
                                  outcome.message);
       }
 
-    // The reader makes and sends one description per rank, one at a time;
-    // the others receive theirs. The serial mesh moves into the function's
-    // triangulation and is freed when it returns.
-    Timer timer;
-    stats.serial_cells     = is_reader ? serial.n_active_cells() : 0;
-    const auto description = TriangulationDescription::Utilities::
-      create_description_from_triangulation_in_groups<dim, dim>(
-        [&serial](Triangulation<dim> &t) { t = std::move(serial); },
-        [](Triangulation<dim> &, const MPI_Comm &, const unsigned int) {
-          // partitioned above, before the outcome was broadcast
-        },
-        comm,
-        n_ranks);
+    // The reader makes and sends one description per rank, one at a time
+    // (as TriangulationDescription::Utilities::
+    // create_description_from_triangulation_in_groups() does for a single
+    // group), the others first, so that they build their part while it
+    // makes its own; then it frees the whole mesh.
+    stats.wait_time = timer.wall_time();
+    timer.restart();
+    stats.serial_cells  = is_reader ? outcome.global_cells : 0;
+    const auto describe = [&](const unsigned int rank) {
+      return from_cells
+               ? describe_part(mesh, owner, rank, comm)
+               : TriangulationDescription::Utilities::
+                   create_description_from_triangulation(
+                     serial,
+                     comm,
+                     TriangulationDescription::Settings::default_setting,
+                     rank);
+    };
+    TriangulationDescription::Description<dim, dim> description;
+    if (is_reader)
+      {
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          if (r != reader)
+            send(Utilities::pack(describe(r), false), r, description_tag, comm);
+        description = describe(reader);
+        mesh        = CheckedMesh<dim>();
+        serial.clear();
+      }
+    else
+      {
+        description =
+          Utilities::unpack<TriangulationDescription::Description<dim, dim>>(
+            receive(reader, description_tag, comm), false);
+        description.comm = comm; // not serialized
+      }
+    stats.describe_time = timer.wall_time();
+    timer.restart();
     stats.description_coarse_cells = description.coarse_cells.size();
     tria.create_triangulation(description);
     stats.distribute_time  = timer.wall_time();

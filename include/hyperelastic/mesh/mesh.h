@@ -29,12 +29,14 @@ namespace hyperelastic
     /// Input cells listed with negative orientation, whose vertex order was
     /// reversed before the mesh was built (on every rank).
     std::size_t reoriented_cells = 0;
-    /// Wall times on the reader (0 elsewhere), in seconds: reading (or
-    /// generating), checking, building the serial triangulation, refining and
-    /// partitioning; and, on every rank, the distribution (descriptions made
-    /// and sent, or received, and the distributed triangulation built).
+    /// Wall times in seconds. On the reader (0 elsewhere): reading (or
+    /// generating), checking, building the serial triangulation, refining
+    /// and partitioning. On every rank: waiting for the reader (others),
+    /// making and sending the descriptions (reader) or receiving one
+    /// (others), and building the distributed triangulation.
     double read_time = 0., check_time = 0., build_time = 0.,
-           partition_time = 0., distribute_time = 0.;
+           partition_time = 0., wait_time = 0., describe_time = 0.,
+           distribute_time = 0.;
   };
 
   /// Builds @p tria from the scene's mesh section and returns the boundary ids
