@@ -13,6 +13,9 @@
 // 3. Distribution: a rank other than the reader builds no serial mesh, and
 //    (without refinement) constructs exactly its own cells plus ghosts; with
 //    a global refinement, fewer cells than the whole mesh.
+// 4. The distributed triangulation equals deal.II's own reading (GridIn) of
+//    the file cell by cell: vertices in the same order, material and
+//    boundary ids (gmsh formats 2 and 4, mixed vertex order).
 //
 // Usage: mpirun -np N mesh_input DIM
 //        mpirun -np N mesh_input bench MESH_FILE DIM
@@ -20,6 +23,7 @@
 //   statistics of create_mesh() and the peak resident memory (benchmarks).
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/grid/grid_in.h>
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/mesh.h>
@@ -398,7 +402,7 @@ namespace
         if (print)
           for (unsigned int r = 0; r < rows.size(); ++r)
             std::cout << "  " << d << ", " << refinements
-                      << " refinement(s), rank " << r << ": serial mesh "
+                      << " refinement(s), rank " << r << ": whole mesh "
                       << rows[r][0] << " cells, owned " << rows[r][1]
                       << ", ghost " << rows[r][2] << ", active " << rows[r][3]
                       << ", coarse cells received " << rows[r][4] << " (of "
@@ -421,12 +425,73 @@ namespace
       }
   }
 
+  /// The distributed triangulation of a gmsh file against the serial one
+  /// of deal.II's own reader (GridIn, which reorients negatively oriented
+  /// cells the same way): the same cells (by coarse cell id) with the same
+  /// vertices in the same order, material ids and boundary ids, and every
+  /// cell owned by one rank.
+  template <int dim>
+  void
+  check_against_grid_in(Checker &checker, const std::string &file)
+  {
+    const MPI_Comm                                 comm = MPI_COMM_WORLD;
+    parallel::fullydistributed::Triangulation<dim> tria(comm);
+    create_mesh(file_mesh(file), tria);
+    Triangulation<dim> serial;
+    {
+      GridIn<dim> grid_in;
+      grid_in.attach_triangulation(serial);
+      std::ifstream in(file);
+      grid_in.read_msh(in);
+    }
+    unsigned int n_owned = 0, n_compared = 0, n_differ = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        if (cell->is_artificial())
+          continue;
+        n_owned += cell->is_locally_owned() ? 1 : 0;
+        ++n_compared;
+        const auto id = cell->id().get_coarse_cell_id();
+        const typename Triangulation<dim>::cell_iterator same(&serial, 0, id);
+        bool                                             equal =
+          id < serial.n_cells(0) && same->material_id() == cell->material_id();
+        for (unsigned int v = 0; equal && v <= dim; ++v)
+          equal = same->vertex(v) == cell->vertex(v);
+        // (The outer faces of the ghost layer are boundary faces of the
+        // distributed triangulation, with id 0.)
+        for (unsigned int f = 0; equal && f <= dim; ++f)
+          if (same->at_boundary(f))
+            equal = cell->at_boundary(f) && same->face(f)->boundary_id() ==
+                                              cell->face(f)->boundary_id();
+          else
+            equal = !cell->at_boundary(f) || !cell->is_locally_owned();
+        n_differ += equal ? 0 : 1;
+      }
+    const unsigned int all_owned = Utilities::MPI::sum(n_owned, comm);
+    const unsigned int differ    = Utilities::MPI::sum(n_differ, comm);
+    const unsigned int compared  = Utilities::MPI::sum(n_compared, comm);
+    checker.is_true(std::to_string(dim) + "D " +
+                      file.substr(file.rfind('/') + 1) + ": " +
+                      std::to_string(compared) +
+                      " owned and ghost cells as GridIn reads them, " +
+                      std::to_string(all_owned) + " owned of " +
+                      std::to_string(serial.n_active_cells()),
+                    differ == 0 && all_owned == serial.n_active_cells());
+  }
+
   template <int dim>
   void
   run_all(Checker &checker, const bool print)
   {
     check_errors<dim>(checker);
     check_distribution<dim>(checker, print);
+    for (const std::string &file :
+         {source_dir + "/meshes/bar_" + std::to_string(dim) + "d.msh",
+          scene_mesh("mixed_order_bar_" + std::to_string(dim) + "d.msh"),
+          scene_mesh("vertex_order_" + std::to_string(dim) + "d.msh"),
+          dim == 2 ? source_dir + "/meshes/block_with_hole_2d.msh"
+                   : source_dir + "/meshes/cook_3d_4.msh"})
+      check_against_grid_in<dim>(checker, file);
     check_vertex_order<dim>(checker, print);
   }
 
