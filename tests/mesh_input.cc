@@ -490,7 +490,11 @@ namespace
           scene_mesh("mixed_order_bar_" + std::to_string(dim) + "d.msh"),
           scene_mesh("vertex_order_" + std::to_string(dim) + "d.msh"),
           dim == 2 ? source_dir + "/meshes/block_with_hole_2d.msh"
-                   : source_dir + "/meshes/cook_3d_4.msh"})
+                   : source_dir + "/meshes/cook_3d_4.msh",
+          scene_mesh("formats/bar_" + std::to_string(dim) + "d_format22.msh"),
+          scene_mesh("formats/bar_" + std::to_string(dim) + "d_format40.msh"),
+          dim == 2 ? scene_mesh("formats/bar_2d_format1.msh")
+                   : source_dir + "/meshes/cook_3d_2.msh"})
       check_against_grid_in<dim>(checker, file);
     check_vertex_order<dim>(checker, print);
   }

@@ -707,7 +707,8 @@ namespace hyperelastic
                   "mesh file '" + file_name +
                   "' is a binary gmsh file; save it as ASCII (gmsh "
                   "option -format msh41 without -bin, or Mesh.Binary = 0)");
-              if (!(version >= 2. && version < 4.15))
+              if (!((version >= 2. && version < 3.) ||
+                    (version >= 4. && version < 4.15)))
                 in.fail("gmsh format version " + std::to_string(version) +
                         " is not supported (1, 2, 4.0 and 4.1 are)");
               in.skip_line();
@@ -1157,7 +1158,7 @@ namespace hyperelastic
                                               inverted_listed,
                                               gmsh_numbering));
         }
-      statistics.check_time = timer.wall_time();
+      statistics.check_time = timer.wall_time() - statistics.build_time;
       return mesh;
     }
 

@@ -1,7 +1,7 @@
 // Mesh creation: a generated box of simplices or a gmsh file, read, checked,
 // refined and partitioned with METIS on one rank (the reader, rank 0); every
-// other rank receives only the description of its own cells (plus a ghost
-// layer) and never holds the whole mesh.
+// rank receives only the description of its own cells (plus a ghost layer),
+// and the others never hold the whole mesh.
 #pragma once
 
 #include <deal.II/base/types.h>
@@ -19,8 +19,9 @@ namespace hyperelastic
   {
     /// Whether this rank read (or generated) and partitioned the mesh.
     bool reader = false;
-    /// Active cells of the whole refined mesh this rank built: the whole mesh
-    /// on the reader, 0 elsewhere.
+    /// Cells of the whole mesh this rank held (a gmsh file's list of cells,
+    /// or a serial triangulation when generated or refined): all on the
+    /// reader, 0 elsewhere.
     std::size_t serial_cells = 0;
     /// Coarse cells of the description this rank received (or made).
     std::size_t description_coarse_cells = 0;
@@ -30,10 +31,12 @@ namespace hyperelastic
     /// reversed before the mesh was built (on every rank).
     std::size_t reoriented_cells = 0;
     /// Wall times in seconds. On the reader (0 elsewhere): reading (or
-    /// generating), checking, building the serial triangulation, refining
-    /// and partitioning. On every rank: waiting for the reader (others),
-    /// making and sending the descriptions (reader) or receiving one
-    /// (others), and building the distributed triangulation.
+    /// generating), checking (zero measures, folds), building (face
+    /// neighbours and boundary faces; for a mesh to be refined also the
+    /// serial triangulation), refining and partitioning. On every rank: waiting
+    /// for the reader's outcome (others), making and sending the descriptions
+    /// (reader) or receiving one (others), and building the distributed
+    /// triangulation.
     double read_time = 0., check_time = 0., build_time = 0.,
            partition_time = 0., wait_time = 0., describe_time = 0.,
            distribute_time = 0.;
