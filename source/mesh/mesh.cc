@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -463,10 +464,12 @@ namespace hyperelastic
     std::string
     read_file(const std::string &file_name)
     {
-      std::ifstream in(file_name, std::ios::binary);
-      if (!in)
+      std::ifstream   in(file_name, std::ios::binary);
+      std::error_code error;
+      if (!in || !std::filesystem::is_regular_file(file_name, error))
         throw InputError("cannot open mesh file '" + file_name +
-                         "' (Mesh/File)");
+                         "' (Mesh/File)" +
+                         (in ? ": it is not a regular file" : ""));
       in.seekg(0, std::ios::end);
       const std::streamoff size = in.tellg();
       in.seekg(0);
