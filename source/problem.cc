@@ -66,11 +66,8 @@ namespace hyperelastic
     // Located once; a point outside the mesh is an input error now, not
     // after the first load step.
     if (!parameters.output.points.empty())
-      point_values =
-        std::make_unique<PointValues<dim>>(output_points<dim>(parameters.output),
-                                           dof_handler,
-                                           mapping,
-                                           comm);
+      point_values = std::make_unique<PointValues<dim>>(
+        output_points<dim>(parameters.output), dof_handler, mapping, comm);
 
     boundary_conditions->make_constraints(mapping,
                                           dof_handler,
@@ -112,6 +109,10 @@ namespace hyperelastic
       *material,
       *boundary_conditions,
       parameters.problem.fast_p1_assembly);
+    // A load without a potential makes the tangent non-symmetric.
+    linear_solver.set_symmetric(elasticity->is_conservative());
+    if (parameters.output.write_vtu)
+      material3d = create_material<3>(material->name(), material->parameters());
     writer = std::make_unique<OutputWriter<dim>>(parameters.output, comm);
 
     // Dofs on each Dirichlet boundary id with the components prescribed there
@@ -166,11 +167,18 @@ namespace hyperelastic
           << "material: " << material->name()
           << " (mu = " << parameters.material.lame.mu
           << ", lambda = " << parameters.material.lame.lambda << ")\n"
-          << "linear solver: "
-          << (parameters.linear_solver.type == LinearSolverType::direct
-                ? parameters.linear_solver.direct_solver
-                : std::string("CG with ML AMG (rigid-body near-null space)"))
-          << std::endl;
+          << "linear solver: " << linear_solver.description() << std::endl;
+    if (!elasticity->load_terms().empty())
+      {
+        pcout << "loads:";
+        for (const auto &term : elasticity->load_terms())
+          pcout << (&term == &elasticity->load_terms().front() ? " " : ", ")
+                << term->name()
+                << (!term->depends_on_solution() ? " (dead)"
+                    : term->is_conservative()    ? " (follower, conservative)"
+                                                 : " (follower)");
+        pcout << std::endl;
+      }
     warn_about_volumetric_locking();
   }
 
@@ -254,6 +262,13 @@ namespace hyperelastic
   }
 
   template <int dim>
+  bool
+  Problem<dim>::has_potential() const
+  {
+    return elasticity->is_conservative();
+  }
+
+  template <int dim>
   double
   Problem<dim>::directional_derivative() const
   {
@@ -275,6 +290,15 @@ namespace hyperelastic
     TrialPoint point;
     if (check == TrialCheck::none)
       return point;
+    if (check == TrialCheck::residual)
+      {
+        point.residual = free_residual_norm(point.residual_noise);
+        point.min_J = elasticity->evaluate(u_ghosted, load_factor, false).min_J;
+        point.admissible =
+          (material->defined_for_inverted_elements() || point.min_J > 0.) &&
+          std::isfinite(point.residual);
+        return point;
+      }
     const EnergyEvaluation e =
       elasticity->evaluate(u_ghosted, load_factor, check == TrialCheck::energy);
     point.min_J = e.min_J;
@@ -303,17 +327,26 @@ namespace hyperelastic
   Problem<dim>::residual_norms()
   {
     TimerOutput::Scope scope(timer, "residual");
-    const double       noise = elasticity->assemble_forces(u_ghosted,
-                                                     load_factor,
-                                                     internal_force,
-                                                     external_force);
-    residual                 = internal_force;
+    double             noise;
+    const double       norm = free_residual_norm(noise);
+    force_scale             = std::max(
+      {force_scale, internal_force.l2_norm(), external_force.l2_norm()});
+    return {norm, force_scale, noise};
+  }
+
+  template <int dim>
+  double
+  Problem<dim>::free_residual_norm(double &noise)
+  {
+    noise    = elasticity->assemble_forces(u_ghosted,
+                                        load_factor,
+                                        internal_force,
+                                        external_force);
+    residual = internal_force;
     residual -= external_force;
     VectorType free_residual = residual;
     homogeneous_constraints.set_zero(free_residual);
-    force_scale = std::max(
-      {force_scale, internal_force.l2_norm(), external_force.l2_norm()});
-    return {free_residual.l2_norm(), force_scale, noise};
+    return free_residual.l2_norm();
   }
 
   template <int dim>
@@ -429,8 +462,8 @@ namespace hyperelastic
     if (parameters.output.write_vtu)
       {
         TimerOutput::Scope output_scope(timer, "output");
-        double             min_J;
-        const CellFields   fields = elasticity->cell_fields(u_ghosted, min_J);
+        const CellFields   fields = compute_cell_fields(
+          dof_handler, mapping, *material, *material3d, u_ghosted);
         writer->write_fields(
           step.step, load_factor, dof_handler, mapping, u_ghosted, fields);
       }
@@ -478,8 +511,8 @@ namespace hyperelastic
     setup();
     if (parameters.output.write_vtu)
       {
-        double           min_J;
-        const CellFields fields = elasticity->cell_fields(u_ghosted, min_J);
+        const CellFields fields = compute_cell_fields(
+          dof_handler, mapping, *material, *material3d, u_ghosted);
         writer->write_fields(0, 0., dof_handler, mapping, u_ghosted, fields);
       }
 

@@ -89,6 +89,14 @@ namespace hyperelastic
       return lame;
     }
 
+    /// The rest-state (small-strain) moduli: dP/dF at F = I is their
+    /// tensor. For round-off scales, warnings and the run header.
+    const LameParameters &
+    small_strain_moduli() const
+    {
+      return lame;
+    }
+
   protected:
     /// A tensor of NaNs: P (and each block of dP/dF) where a model is
     /// undefined.

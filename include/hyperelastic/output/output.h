@@ -9,7 +9,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/output/cell_fields.h>
 #include <hyperelastic/solvers/newton_solver.h>
 #include <hyperelastic/output/output_parameters.h>
 
