@@ -125,6 +125,23 @@ namespace hyperelastic
                size(c.expressions) + " expressions",
                "needs " + std::to_string(dim) +
                  " expressions separated by ';'");
+    // Accepting inverted equilibria needs a model defined at J <= 0.
+    if (newton.inverted_elements == InvertedElements::warn)
+      {
+        const bool defined =
+          dim == 2 ? create_material<2>(material.model, material.lame)
+                       ->defined_for_inverted_elements()
+                   : create_material<3>(material.model, material.lame)
+                       ->defined_for_inverted_elements();
+        if (!defined)
+          reject("Newton/Inverted elements at equilibrium",
+                 "warn",
+                 "the " + material.model +
+                   " model is not defined for inverted elements (its energy "
+                   "is infinite at J <= 0), so no state with them can be "
+                   "accepted; use 'automatic' or 'reject', or a model "
+                   "defined there (stable neo-Hookean, corotational)");
+      }
     // Two conditions on the same id and component contradict each other.
     for (unsigned int a = 0; a < loading.dirichlet.size(); ++a)
       for (unsigned int b = a + 1; b < loading.dirichlet.size(); ++b)

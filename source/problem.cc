@@ -7,6 +7,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/mesh.h>
+#include <hyperelastic/output/inverted_cells.h>
 #include <hyperelastic/problem.h>
 #include <hyperelastic/solvers/rigid_body_modes.h>
 
@@ -360,18 +361,49 @@ namespace hyperelastic
   void
   Problem<dim>::verify_converged_state()
   {
-    // An equilibrium with inverted elements is not a physical state, even
-    // for models that are defined there (St. Venant-Kirchhoff past its
-    // compressive limit point, or a corotational element turned inside out).
-    converged_min_J = elasticity->evaluate(u_ghosted, load_factor, false).min_J;
-    if (!(converged_min_J > 0.))
+    // A model defined at J <= 0 (stable neo-Hookean, corotational, St.
+    // Venant-Kirchhoff, linear elastic) can have equilibria with inverted
+    // elements as its correct discrete answer, for example near the clamped
+    // edges of a crushed body: accepted with a warning unless the scene
+    // asks to reject them. For a model undefined there such a state is
+    // never a solution.
+    const InvertedCells<dim> inverted =
+      find_inverted_cells(mapping, dof_handler, u_ghosted);
+    converged_min_J          = inverted.min_J;
+    converged_inverted_cells = inverted.n_cells;
+    if (inverted.n_cells == 0)
+      return;
+
+    const bool         defined = material->defined_for_inverted_elements();
+    std::ostringstream where;
+    where << inverted.n_cells << " inverted cell"
+          << (inverted.n_cells == 1 ? "" : "s")
+          << " (J <= 0; smallest J = " << inverted.min_J
+          << " in the cell centred at (" << inverted.worst_cell_center << "))";
+    if (parameters.newton.accepts_inverted_elements(defined))
       {
-        std::ostringstream message;
-        message << "Newton converged to a state with inverted elements "
-                << "(smallest J = " << converged_min_J
-                << "): the load exceeds what the model can carry";
-        throw ConvergenceFailure(message.str());
+        pcout << "   warning: equilibrium with " << where.str()
+              << ", accepted: the " << material->name()
+              << " model is defined there ('Newton/Inverted elements at "
+                 "equilibrium = warn')"
+              << std::endl;
+        return;
       }
+    std::ostringstream message;
+    message << "Newton converged to an equilibrium with " << where.str();
+    if (defined)
+      message << ", rejected by 'Newton/Inverted elements at equilibrium = "
+                 "reject'; the "
+              << material->name()
+              << " model is defined for J <= 0 and this can be its correct "
+                 "discrete answer: set that entry to 'warn' to accept it";
+    else
+      message << ", where the " << material->name()
+              << " model is not defined (infinite energy): not a solution; "
+                 "keep 'Newton/Line search = true' (its J > 0 filter keeps "
+                 "this model's iterates admissible) or use a model defined "
+                 "for J <= 0 (stable neo-Hookean, corotational)";
+    throw ConvergenceFailure(message.str());
   }
 
   // ------------------------------------------------------- SteppedSystem
@@ -421,6 +453,7 @@ namespace hyperelastic
     s.residual          = result.history.back().residual;
     s.energy            = elasticity->total_energy(u_ghosted, load_factor);
     s.min_J             = converged_min_J;
+    s.inverted_cells    = converged_inverted_cells;
 
     // residual = f_int - f_ext at the converged state: on supported dofs it
     // is the force the support exerts on the body.

@@ -201,8 +201,10 @@ namespace hyperelastic
     /// Running maxima of the force and displacement norms (Newton's scales).
     double force_scale   = 0.;
     double solution_size = 0.;
-    /// Smallest J of the last converged state.
-    double converged_min_J = 1.;
+    /// Smallest J of the last converged state, and how many cells have
+    /// J <= 0 there (non-zero only when such states are accepted).
+    double                           converged_min_J          = 1.;
+    dealii::types::global_cell_index converged_inverted_cells = 0;
 
     /// The last converged state, to return to after a failed load step.
     struct ConvergedState

@@ -1,4 +1,5 @@
-// The scene's Output subsection: declaration, documentation and validation of its entries.
+// The scene's Output subsection: declaration, documentation and validation of
+// its entries.
 #include <deal.II/base/utilities.h>
 
 #include <hyperelastic/base/error_handling.h>
@@ -85,8 +86,8 @@ namespace hyperelastic
         if (!ok || coordinates.size() < 2 || coordinates.size() > 3)
           reject("Output/Points",
                  points_text,
-                 "expected points 'x, y[, z]' separated by ';', got '" +
-                   point + "'");
+                 "expected points 'x, y[, z]' separated by ';', got '" + point +
+                   "'");
         points.push_back(coordinates);
       }
     prm.leave_subsection();
