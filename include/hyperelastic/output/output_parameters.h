@@ -1,0 +1,31 @@
+// The scene's Output subsection: files, verbosity and reported points.
+// Declared with pattern, default and documentation; parsed with the values
+// checked (an invalid value is an InputError naming the entry).
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace hyperelastic
+{
+  using dealii::ParameterHandler;
+
+  struct OutputParameters
+  {
+    std::string directory = "output";
+    std::string base_name = "solution";
+    bool        write_vtu = true;
+    bool        verbose   = true;
+    /// Reference points at which the displacement is reported every load
+    /// step ("Points"): each 2 or 3 coordinates as written (the number is
+    /// checked against the dimension at setup).
+    std::vector<std::vector<double>> points;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
+  };
+} // namespace hyperelastic

@@ -1,0 +1,95 @@
+// The scene's Output subsection: declaration, documentation and validation of
+// its entries.
+#include <deal.II/base/utilities.h>
+
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/output/output_parameters.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hyperelastic
+{
+  using dealii::Patterns::Anything;
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::List;
+  using dealii::Patterns::MultipleSelection;
+  using dealii::Patterns::Selection;
+
+  void
+  OutputParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory",
+                      "output",
+                      Anything(),
+                      "Folder for all output (created if missing; relative to "
+                      "the working directory).");
+    prm.declare_entry("Base name",
+                      "solution",
+                      Anything(),
+                      "Prefix of the output files: <base>.pvd, "
+                      "<base>_<step>.pvtu, <base>_<step>.<rank>.vtu and "
+                      "<base>.csv.");
+    prm.declare_entry("Write VTU",
+                      "true",
+                      Bool(),
+                      "Write the ParaView files at every load step (the CSV "
+                      "summary is always written).");
+    prm.declare_entry("Verbose",
+                      "true",
+                      Bool(),
+                      "Print the Newton table of every load step.");
+    prm.declare_entry(
+      "Points",
+      "",
+      Anything(),
+      "Reference points at which the displacement is reported after every "
+      "converged load step, as 'x, y; x, y' in 2D or 'x, y, z; x, y, z' in "
+      "3D (for example '48, 60; 48, 52'). Each point adds the CSV columns "
+      "point<k>_ux, point<k>_uy (, point<k>_uz), k = 1, 2, ... in the order "
+      "given. A point on a vertex, edge or face shared by several cells gets "
+      "their average. A point outside the mesh is an input error. Empty: no "
+      "points.");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory = dealii::Utilities::trim(prm.get("Directory"));
+    base_name = dealii::Utilities::trim(prm.get("Base name"));
+    write_vtu = prm.get_bool("Write VTU");
+    verbose   = prm.get_bool("Verbose");
+    if (directory.empty())
+      reject("Output/Directory", "", "must not be empty");
+    if (base_name.empty() || base_name.find('/') != std::string::npos)
+      reject("Output/Base name", base_name, "must be a non-empty file name");
+    const std::string points_text = prm.get("Points");
+    points.clear();
+    for (const auto &point : split_expressions(points_text))
+      {
+        std::vector<double> coordinates;
+        bool                ok = true;
+        for (const auto &c : dealii::Utilities::split_string_list(point, ','))
+          {
+            std::istringstream in(c);
+            double             x = 0.;
+            in >> x;
+            ok = ok && !in.fail() && std::isfinite(x) && (in >> std::ws).eof();
+            coordinates.push_back(x);
+          }
+        if (!ok || coordinates.size() < 2 || coordinates.size() > 3)
+          reject("Output/Points",
+                 points_text,
+                 "expected points 'x, y[, z]' separated by ';', got '" + point +
+                   "'");
+        points.push_back(coordinates);
+      }
+    prm.leave_subsection();
+  }
+} // namespace hyperelastic
