@@ -47,8 +47,7 @@ namespace hyperelastic
     TimerOutput::Scope scope(timer, "mesh and setup");
     const auto         mesh_ids = create_mesh(parameters.mesh, triangulation);
 
-    material =
-      create_material<dim>(parameters.material.model, parameters.material.lame);
+    material = create_material<dim>(parameters.material);
     boundary_conditions =
       std::make_unique<BoundaryConditions<dim>>(parameters.loading, mesh_ids);
     if (load_editor)
@@ -164,8 +163,8 @@ namespace hyperelastic
           << dof_handler.n_dofs() << " unknowns, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n"
           << "material: " << material->name()
-          << " (mu = " << parameters.material.lame.mu
-          << ", lambda = " << parameters.material.lame.lambda << ")\n"
+          << " (mu = " << material->small_strain_moduli().mu
+          << ", lambda = " << material->small_strain_moduli().lambda << ")\n"
           << "linear solver: "
           << (parameters.linear_solver.type == LinearSolverType::direct
                 ? parameters.linear_solver.direct_solver
@@ -181,7 +180,7 @@ namespace hyperelastic
     // Linear simplices have too few displacement modes to deform at nearly
     // constant volume: when lambda >> mu they lock (far too stiff in
     // bending and shear). Warn; it is not an error.
-    const double nu = parameters.material.lame.poisson_ratio();
+    const double nu = material->small_strain_moduli().poisson_ratio();
     if (parameters.problem.fe_degree == 1 && nu > 0.45)
       pcout << "warning: Poisson's ratio " << nu
             << " > 0.45 with P1 elements: expect volumetric locking (too "

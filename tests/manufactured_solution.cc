@@ -67,7 +67,7 @@ namespace
 
     Parameters parameters;
     parameters.read_from_string(text);
-    const auto material = create_material<dim>(model, parameters.material.lame);
+    const auto   material = create_material<dim>(parameters.material);
     Problem<dim> problem(parameters, MPI_COMM_WORLD, false);
     problem.set_load_editor([&](BoundaryConditions<dim> &bc) {
       for (auto &d : bc.dirichlet)

@@ -98,7 +98,7 @@ namespace
 
     // Stress at degree + 1 points per cell (the field is affine per cell for
     // P1; P2 has 3 (2D) or 4 (3D) points), node positions.
-    const auto               material = create_material<dim>(model, parameters.material.lame);
+    const auto material = create_material<dim>(parameters.material);
     const DoFHandler<dim>   &dof_handler = problem.get_dof_handler();
     const MappingFE<dim>     mapping(FE_SimplexP<dim>(1));
     const QGaussSimplex<dim> quadrature(degree + 1);

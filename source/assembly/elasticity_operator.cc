@@ -298,8 +298,9 @@ namespace hyperelastic
     const FiniteElement<dim> &fe = dof_handler.get_fe();
     Vector<double>            cell_internal(fe.dofs_per_cell);
     Vector<double>            cell_external(fe.dofs_per_cell);
-    const double modulus_scale = std::abs(material.parameters().mu) +
-                                 std::abs(material.parameters().lambda);
+    const double              modulus_scale =
+      std::abs(material.small_strain_moduli().mu) +
+      std::abs(material.small_strain_moduli().lambda);
     // Round-off of the internal forces: each stress entry carries an error of
     // about eps (|mu| + |lambda|)(1 + |F|^2) (lambda ln J cancels mu F at
     // small strain), spread by the shape gradients; cells add up randomly.
@@ -423,8 +424,9 @@ namespace hyperelastic
     // The energy density is computed from terms of the size of the moduli
     // (mu (I1 - 3): I1 is about 3), so its round-off is eps times them, not
     // eps times psi; the same holds for the work of the loads.
-    const double modulus_scale = std::abs(material.parameters().mu) +
-                                 std::abs(material.parameters().lambda);
+    const double modulus_scale =
+      std::abs(material.small_strain_moduli().mu) +
+      std::abs(material.small_strain_moduli().lambda);
     constexpr double round_off = 1e-13;
     double           energy = 0., magnitude = 0.;
     double           min_J = std::numeric_limits<double>::infinity();
@@ -488,8 +490,7 @@ namespace hyperelastic
   CellFields
   ElasticityOperator<dim>::cell_fields(const VectorType &u, double &min_J) const
   {
-    const auto material3d =
-      create_material<3>(material.name(), material.parameters());
+    const auto         material3d = material.three_dimensional_twin();
     const unsigned int n_cells =
       dof_handler.get_triangulation().n_active_cells();
     CellFields fields;

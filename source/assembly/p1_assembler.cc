@@ -145,8 +145,9 @@ namespace hyperelastic
     internal        = 0.;
     double *f       = internal.begin();
     // Round-off magnitude, as in ElasticityOperator::assemble_forces.
-    const double modulus_scale = std::abs(material.parameters().mu) +
-                                 std::abs(material.parameters().lambda);
+    const double modulus_scale =
+      std::abs(material.small_strain_moduli().mu) +
+      std::abs(material.small_strain_moduli().lambda);
     double       magnitude_squared = 0.;
     std::string  error;
     unsigned int bad_cell = 0;
@@ -460,8 +461,9 @@ namespace hyperelastic
                                   double           &min_J) const
   {
     const double *U            = ghosted_values(u);
-    const double modulus_scale = std::abs(material.parameters().mu) +
-                                 std::abs(material.parameters().lambda);
+    const double  modulus_scale =
+      std::abs(material.small_strain_moduli().mu) +
+      std::abs(material.small_strain_moduli().lambda);
     energy    = 0.;
     magnitude = 0.;
     min_J     = std::numeric_limits<double>::infinity();
