@@ -21,7 +21,12 @@
 //      exception at J < 0, kept as a check);
 //  10. scene entries: every registered model parsed from a Material section
 //      (its own subsection written from the registry) has the intended
-//      small-strain moduli.
+//      small-strain moduli; a Material/Mooney-Rivlin section gives exactly
+//      its C1, C2 and Bulk modulus;
+//  11. Mooney-Rivlin only, with constants of its own (not the small-strain
+//      split): C2 = 0 is decoupled neo-Hookean with mu = 2 C1, the parts by
+//      hand, small_strain_moduli() = (2 (C1 + C2), kappa - 2 mu / 3) and the
+//      rest tangent, finite differences (C1 = 0 included), psi >= 0.
 // Every registered model (material_registry.h) is tested in 2D and 3D. One
 // table row per (model, dim, check) shows the worst error over all samples of
 // that row; the program ends with "N passed, M failed" and fails if M > 0.
@@ -33,6 +38,7 @@
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/materials/material_parameters.h>
 #include <hyperelastic/materials/material_registry.h>
+#include <hyperelastic/materials/mooney_rivlin.h>
 #include <hyperelastic/materials/polar_decomposition.h>
 
 #include <algorithm>
@@ -1455,6 +1461,221 @@ namespace
                   lowest.worst_case);
   }
 
+  // --------------------------------------------------- 11. Mooney-Rivlin
+
+  const std::string mooney_rivlin = "Mooney-Rivlin";
+
+  MooneyRivlinConstants
+  mooney_rivlin_constants(const double c1, const double c2, const double kappa)
+  {
+    MooneyRivlinConstants constants;
+    constants.c1    = c1;
+    constants.c2    = c2;
+    constants.kappa = kappa;
+    return constants;
+  }
+
+  /// I2 = C11 C22 - C12^2 + ... (the principal 2x2 minors of the 3D C),
+  /// written independently of the model's (I1^2 - tr(C^2)) / 2.
+  template <int dim>
+  double
+  second_invariant(const Tensor<2, dim> &F)
+  {
+    Tensor<2, 3> C;
+    C[2][2]                    = 1.; // plane strain: F33 = 1
+    const Tensor<2, dim> C_dim = transpose(F) * F;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        C[i][j] = C_dim[i][j];
+    return C[0][0] * C[1][1] - C[0][1] * C[1][0] + C[1][1] * C[2][2] -
+           C[1][2] * C[2][1] + C[0][0] * C[2][2] - C[0][2] * C[2][0];
+  }
+
+  /// The model with constants of its own rather than the split
+  /// create_material() uses: C2 > C1, so that swapped roles would show.
+  template <int dim>
+  void
+  check_mooney_rivlin(Report &report)
+  {
+    const MooneyRivlinConstants own = mooney_rivlin_constants(0.2, 0.35, 3.);
+    const MooneyRivlin<dim>     material(own);
+    RandomTensors               random(900 + dim);
+
+    // C2 = 0 is decoupled neo-Hookean with mu = 2 C1 and the same kappa.
+    {
+      const MooneyRivlin<dim> c2_zero(mooney_rivlin_constants(0.2, 0., 3.));
+      const auto              neo_hookean =
+        create_material<dim>("decoupled neo-Hookean",
+                             lame_parameters(0.4, 3. - 2. / 3. * 0.4));
+      Worst error;
+      for (unsigned int s = 0; s < n_samples; ++s)
+        {
+          const Tensor<2, dim> F =
+            random.deformation<dim>(sample_determinant(random, s, 1.));
+          Tensor<2, dim> P, P_nh;
+          Tensor<4, dim> A, A_nh;
+          c2_zero.stress_and_tangent(F, P, A);
+          neo_hookean->stress_and_tangent(F, P_nh, A_nh);
+          const double psi_nh = neo_hookean->energy_density(F);
+          error.update(std::max({std::abs(c2_zero.energy_density(F) - psi_nh) /
+                                   std::abs(psi_nh),
+                                 (P - P_nh).norm() / P_nh.norm(),
+                                 (A - A_nh).norm() / A_nh.norm()}),
+                       F);
+        }
+      report.below(mooney_rivlin,
+                   dim,
+                   "C2 = 0: psi, P, dP/dF = decoupled NH, mu = 2 C1",
+                   error.value,
+                   1e-12,
+                   error.worst_case);
+    }
+
+    // Isochoric F (J = 1): psi = C1 (I1 - 3) + C2 (I2 - 3), volumetric 0.
+    Worst isochoric_error;
+    for (unsigned int s = 0; s < n_samples; ++s)
+      {
+        const Tensor<2, dim> F  = random.deformation<dim>(1.);
+        const double         I1 = scalar_product(F, F) + (dim == 2 ? 1. : 0.);
+        const double         expected =
+          own.c1 * (I1 - 3.) + own.c2 * (second_invariant(F) - 3.);
+        isochoric_error.update(std::abs(material.energy_density(F) - expected) /
+                                 expected,
+                               F);
+      }
+    report.below(mooney_rivlin,
+                 dim,
+                 "psi = C1 (I1 - 3) + C2 (I2 - 3) at J = 1",
+                 isochoric_error.value,
+                 1e-12,
+                 isochoric_error.worst_case);
+
+    // Pure dilatation F = c I: in 3D only the volumetric part; in plane
+    // strain I1 = 2 c^2 + 1, I2 = c^4 + 2 c^2 and J = c^2.
+    Worst dilatation_error;
+    for (unsigned int s = 0; s < n_samples; ++s)
+      {
+        const double   c = s % 2 == 0 ? random.log_uniform(0.5, 0.8)
+                                      : random.log_uniform(1.25, 1.5);
+        Tensor<2, dim> F = identity<dim>();
+        F *= c;
+        const double J = std::pow(c, dim);
+        const double volume =
+          0.25 * own.kappa * (J * J - 1. - 2. * std::log(J));
+        const double expected =
+          volume +
+          (dim == 3
+             ? 0.
+             : own.c1 * (std::pow(J, -2. / 3.) * (2. * c * c + 1.) - 3.) +
+                 own.c2 *
+                   (std::pow(J, -4. / 3.) * (std::pow(c, 4) + 2. * c * c) -
+                    3.));
+        dilatation_error.update(
+          std::abs(material.energy_density(F) - expected) / expected, F);
+      }
+    report.below(mooney_rivlin,
+                 dim,
+                 "psi(c I) by hand",
+                 dilatation_error.value,
+                 1e-12,
+                 dilatation_error.worst_case);
+
+    // Small-strain moduli and the rest tangent for these constants.
+    {
+      const LameParameters moduli = material.small_strain_moduli();
+      const double         mu     = 2. * (own.c1 + own.c2);
+      const double         lambda = own.kappa - 2. / 3. * mu;
+      report.below(mooney_rivlin,
+                   dim,
+                   "small_strain_moduli = (2 (C1+C2), kappa - 2mu/3)",
+                   std::max(std::abs(moduli.mu - mu) / mu,
+                            std::abs(moduli.lambda - lambda) /
+                              std::abs(lambda)),
+                   1e-14);
+      const Tensor<4, dim> C = linear_elastic_tangent<dim>(moduli);
+      const Tensor<2, dim> I = identity<dim>();
+      report.below(mooney_rivlin,
+                   dim,
+                   "|dP/dF(I) - C(small_strain_moduli)| / |C|",
+                   (material.stress_tangent(I) - C).norm() / C.norm(),
+                   1e-12);
+    }
+
+    // The split create_material() uses gives back the moduli it was given.
+    {
+      Worst error;
+      for (const NamedParameters &set : rest_state_parameters())
+        {
+          const LameParameters moduli =
+            create_material<dim>(mooney_rivlin, set.lame)
+              ->small_strain_moduli();
+          error.update(std::max(std::abs(moduli.mu - set.lame.mu),
+                                std::abs(moduli.lambda - set.lame.lambda)) /
+                         (set.lame.mu + std::abs(set.lame.lambda)),
+                       identity<dim>());
+        }
+      report.below(mooney_rivlin,
+                   dim,
+                   "split: small_strain_moduli() = given (mu, lambda)",
+                   error.value,
+                   1e-14);
+    }
+
+    // Finite differences with these constants and with C1 = 0 (the I2 term
+    // alone), where check 2's split has both terms at a fixed ratio.
+    for (const MooneyRivlinConstants &constants :
+         {own, mooney_rivlin_constants(0., 0.5, 1.)})
+      {
+        const MooneyRivlin<dim> model(constants);
+        const auto              P_of = [&](const Tensor<2, dim> &G) {
+          return model.first_piola_kirchhoff(G);
+        };
+        Worst P_error, A_error;
+        for (unsigned int s = 0; s < n_samples; ++s)
+          {
+            const Tensor<2, dim> F =
+              random.deformation<dim>(sample_determinant(random, s, 1.));
+            const Tensor<2, dim> P = model.first_piola_kirchhoff(F);
+            const Tensor<4, dim> A = model.stress_tangent(F);
+            P_error.update((P - gradient_by_differences(model, F)).norm() /
+                             P.norm(),
+                           F);
+            A_error.update((A - jacobian_by_differences(P_of, F)).norm() /
+                             A.norm(),
+                           F);
+          }
+        const std::string tag = constants.c1 == 0. ? "C1 = 0" : "C1 < C2";
+        report.below(mooney_rivlin,
+                     dim,
+                     "P vs FD of psi, J in [0.2, 3], " + tag,
+                     P_error.value,
+                     1e-6,
+                     P_error.worst_case);
+        report.below(mooney_rivlin,
+                     dim,
+                     "dP/dF vs FD of P, J in [0.2, 3], " + tag,
+                     A_error.value,
+                     1e-6,
+                     A_error.worst_case);
+      }
+
+    // psi >= 0 (AM-GM on the squared stretches, C1, C2 >= 0).
+    Worst lowest(false);
+    for (unsigned int s = 0; s < n_samples; ++s)
+      {
+        const Tensor<2, dim> F =
+          random.deformation<dim>(sample_determinant(random, s, 1.));
+        lowest.update(material.energy_density(F), F);
+      }
+    report.record(mooney_rivlin,
+                  dim,
+                  "min psi over random J in [0.2, 3]",
+                  lowest.value,
+                  ">= 0",
+                  lowest.value >= 0.,
+                  lowest.worst_case);
+  }
+
   // ------------------------------------------------- 10. scene entries
 
   /// A Material section parsed the way a scene is (MaterialParameters).
@@ -1501,6 +1722,25 @@ namespace
                      error,
                      1e-14);
       }
+
+    // A Material/Mooney-Rivlin section gives exactly its constants, and the
+    // shared entries (left invalid here) are not read for it.
+    const MaterialParameters parsed = parse_material_section(
+      "set Model = Mooney-Rivlin\nset Poisson's ratio = 0.5\n"
+      "subsection Mooney-Rivlin\nset C1 = 0.3\nset C2 = 0.25\n"
+      "set Bulk modulus = 5\nend\n");
+    const auto created = create_material<3>(parsed);
+    const auto mooney  = dynamic_cast<const MooneyRivlin<3> *>(created.get());
+    const bool exact   = mooney != nullptr &&
+                       mooney->model_constants().c1 == 0.3 &&
+                       mooney->model_constants().c2 == 0.25 &&
+                       mooney->model_constants().kappa == 5.;
+    report.record(mooney_rivlin,
+                  0,
+                  "Material/Mooney-Rivlin: C1 = 0.3, C2 = 0.25, kappa = 5",
+                  exact ? 1. : 0.,
+                  "= 1",
+                  exact);
   }
 
   template <int dim>
@@ -1541,6 +1781,12 @@ namespace
         report.section(std::to_string(dim) +
                        "D  8. decoupled neo-Hookean: the two parts by hand");
         check_decoupled_neo_hookean<dim>(report);
+      }
+    if (std::find(models.begin(), models.end(), mooney_rivlin) != models.end())
+      {
+        report.section(std::to_string(dim) +
+                       "D  11. Mooney-Rivlin: constants of its own");
+        check_mooney_rivlin<dim>(report);
       }
   }
 } // namespace

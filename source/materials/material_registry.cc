@@ -10,6 +10,7 @@
 #include <hyperelastic/materials/decoupled_neo_hookean.h>
 #include <hyperelastic/materials/linear_elastic.h>
 #include <hyperelastic/materials/material_registry.h>
+#include <hyperelastic/materials/mooney_rivlin.h>
 #include <hyperelastic/materials/neo_hookean.h>
 #include <hyperelastic/materials/st_venant_kirchhoff.h>
 #include <hyperelastic/materials/stable_neo_hookean.h>
@@ -27,6 +28,7 @@ namespace hyperelastic
       make_material_model<NeoHookean>(),
       make_material_model<StableNeoHookean>(),
       make_material_model<DecoupledNeoHookean>(),
+      make_material_model<MooneyRivlin>(),
     };
     return models;
   }

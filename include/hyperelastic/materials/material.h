@@ -153,7 +153,8 @@ namespace hyperelastic
   /// @p small_strain (its tangent at F = I is linear_elastic_tangent of
   /// them). The Lame-based models take the pair as their constants; a model
   /// with constants of its own derives them by the split its registration
-  /// documents. For tests and tools; scenes go through MaterialParameters.
+  /// documents (Mooney-Rivlin: C1 = 3 mu / 8, C2 = mu / 8, kappa = lambda +
+  /// 2 mu / 3). For tests and tools; scenes go through MaterialParameters.
   /// An unknown name throws, listing the registered ones.
   template <int dim>
   std::unique_ptr<Material<dim>>
