@@ -4,6 +4,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/materials/material_registry.h>
 #include <hyperelastic/parameters.h>
 
 #include <algorithm>
@@ -129,10 +130,7 @@ namespace hyperelastic
     if (newton.inverted_elements == InvertedElements::warn)
       {
         const bool defined =
-          dim == 2 ? create_material<2>(material.model, material.lame)
-                       ->defined_for_inverted_elements()
-                   : create_material<3>(material.model, material.lame)
-                       ->defined_for_inverted_elements();
+          material_model(material.model).defined_for_inverted_elements;
         if (!defined)
           reject("Newton/Inverted elements at equilibrium",
                  "warn",
@@ -140,7 +138,7 @@ namespace hyperelastic
                    " model is not defined for inverted elements (its energy "
                    "is infinite at J <= 0), so no state with them can be "
                    "accepted; use 'automatic' or 'reject', or a model "
-                   "defined there (stable neo-Hookean, corotational)");
+                   "defined there (e.g. stable neo-Hookean or corotational)");
       }
     // Two conditions on the same id and component contradict each other.
     for (unsigned int a = 0; a < loading.dirichlet.size(); ++a)

@@ -48,8 +48,7 @@ namespace hyperelastic
     TimerOutput::Scope scope(timer, "mesh and setup");
     const auto         mesh_ids = create_mesh(parameters.mesh, triangulation);
 
-    material =
-      create_material<dim>(parameters.material.model, parameters.material.lame);
+    material = create_material<dim>(parameters.material);
     boundary_conditions =
       std::make_unique<BoundaryConditions<dim>>(parameters.loading, mesh_ids);
     if (load_editor)
@@ -113,7 +112,7 @@ namespace hyperelastic
     // A load without a potential makes the tangent non-symmetric.
     linear_solver.set_symmetric(elasticity->is_conservative());
     if (parameters.output.write_vtu)
-      material3d = create_material<3>(material->name(), material->parameters());
+      material3d = material->three_dimensional_twin();
     writer = std::make_unique<OutputWriter<dim>>(parameters.output, comm);
 
     // Dofs on each Dirichlet boundary id with the components prescribed there
@@ -166,8 +165,8 @@ namespace hyperelastic
           << dof_handler.n_dofs() << " unknowns, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n"
           << "material: " << material->name()
-          << " (mu = " << parameters.material.lame.mu
-          << ", lambda = " << parameters.material.lame.lambda << ")\n"
+          << " (mu = " << material->small_strain_moduli().mu
+          << ", lambda = " << material->small_strain_moduli().lambda << ")\n"
           << "linear solver: " << linear_solver.description() << std::endl;
     if (!elasticity->load_terms().empty())
       {
@@ -190,7 +189,7 @@ namespace hyperelastic
     // Linear simplices have too few displacement modes to deform at nearly
     // constant volume: when lambda >> mu they lock (far too stiff in
     // bending and shear). Warn; it is not an error.
-    const double nu = parameters.material.lame.poisson_ratio();
+    const double nu = material->small_strain_moduli().poisson_ratio();
     if (parameters.problem.fe_degree == 1 && nu > 0.45)
       pcout << "warning: Poisson's ratio " << nu
             << " > 0.45 with P1 elements: expect volumetric locking (too "

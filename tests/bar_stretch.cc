@@ -101,11 +101,11 @@ namespace
     else
       text +=
         subsection("Mesh", entry("Source", "file") + entry("File", mesh_file));
-    text +=
-      subsection("Material",
-                 entry("Model", model) + entry("Elastic constants", "Lame") +
-                   entry("Shear modulus", number(mu)) +
-                   entry("Lame lambda", number(lambda)));
+    text += material_section(model,
+                             entry("Elastic constants", "Lame") +
+                               entry("Shear modulus", number(mu)) +
+                               entry("Lame lambda", number(lambda)),
+                             lame_parameters(mu, lambda));
     text += subsection("Loading", entry("Number of load steps", "5"));
     // Symmetry rollers on the faces x = 0 (id 0), y = 0 (id 2), z = 0 (id 4).
     const int off = id_offset(mesh_file);

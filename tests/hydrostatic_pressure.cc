@@ -54,9 +54,10 @@ namespace
                       entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
                         entry("Upper corner", three ? "1, 1, 1" : "1, 1") +
                         entry("Subdivisions", three ? "2, 2, 2" : "3, 3")) +
-           subsection("Material",
-                      entry("Model", model) + entry("Young's modulus", "1") +
-                        entry("Poisson's ratio", "0.3")) +
+           material_section(model,
+                            entry("Young's modulus", "1") +
+                              entry("Poisson's ratio", "0.3"),
+                            lame_parameters(1. / 2.6, 0.3 / (1.3 * 0.4))) +
            subsection("Loading", entry("Number of load steps", "2")) +
            dirichlet(1, 0, "x", "0") + dirichlet(2, 2, "y", "0") +
            (three ? dirichlet(3, 4, "z", "0") : std::string()) + loads +
@@ -107,7 +108,8 @@ namespace
   void
   check(Checker &checker, const bool)
   {
-    for (const std::string model : {"neo-Hookean", "decoupled neo-Hookean"})
+    for (const std::string model :
+         {"neo-Hookean", "decoupled neo-Hookean", "Mooney-Rivlin"})
       {
         std::array<double, 2> stretch = {{0., 0.}};
         for (const bool follower : {true, false})
@@ -117,7 +119,7 @@ namespace
             Problem<dim> problem(parameters, MPI_COMM_WORLD, false);
             problem.run();
             const auto material =
-              create_material<dim>(model, parameters.material.lame);
+              create_material<dim>(parameters.material);
             const double s =
               follower ? homogeneous_stretch(*material,
                                              [](const double s) {

@@ -33,9 +33,10 @@ namespace
   {
     return subsection("Problem", entry("Dimension", "2")) +
            subsection("Mesh", entry("Source", "file") + entry("File", mesh)) +
-           subsection("Material",
-                      entry("Model", model) + entry("Young's modulus", "1") +
-                        entry("Poisson's ratio", "0.3")) +
+           material_section(model,
+                            entry("Young's modulus", "1") +
+                              entry("Poisson's ratio", "0.3"),
+                            lame_parameters(1. / 2.6, 0.3 / (1.3 * 0.4))) +
            subsection("Loading", entry("Number of load steps", "2")) +
            dirichlet(1,
                      2,
@@ -83,13 +84,14 @@ namespace
   void
   check(Checker &checker, const std::string &meshes)
   {
-    for (const std::string model : {"neo-Hookean", "decoupled neo-Hookean"})
+    for (const std::string model :
+         {"neo-Hookean", "decoupled neo-Hookean", "Mooney-Rivlin"})
       {
         Parameters parameters;
         parameters.read_from_string(
           scene(meshes + "/annulus_2d_16.msh", model));
         const auto material =
-          create_material<2>(model, parameters.material.lame);
+          create_material<2>(parameters.material);
         const RadialInflation<2> reference(
           *material, inner, outer, p, outer_deformed, 20000);
         const RadialInflation<2> check_reference(
