@@ -30,9 +30,9 @@
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include "../tests/analytic_bar.h"
-#include "../tests/manufactured_motion.h"
-#include "../tests/scene_text.h"
+#include "support/analytic_bar.h"
+#include "support/manufactured_motion.h"
+#include "support/scene_text.h"
 
 #include <sys/resource.h>
 

@@ -18,9 +18,9 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/loads/boundary_conditions.h>
 
-#include "box_discretisation.h"
-#include "checker.h"
-#include "random_vector.h"
+#include "support/box_discretisation.h"
+#include "support/checker.h"
+#include "support/random_vector.h"
 
 #include <string>
 

@@ -13,8 +13,8 @@
 // Usage: mpirun -np N hydrostatic_pressure DIM
 #include <hyperelastic/problem.h>
 
-#include "dimension_main.h"
-#include "scene_text.h"
+#include "support/dimension_main.h"
+#include "support/scene_text.h"
 
 #include <cmath>
 

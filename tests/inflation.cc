@@ -14,9 +14,9 @@
 // Usage: mpirun -np N inflation MESH_FOLDER
 #include <hyperelastic/problem.h>
 
-#include "dimension_main.h"
-#include "radial_inflation.h"
-#include "scene_text.h"
+#include "support/dimension_main.h"
+#include "support/radial_inflation.h"
+#include "support/scene_text.h"
 
 #include <cmath>
 

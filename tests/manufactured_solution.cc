@@ -17,9 +17,9 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "checker.h"
-#include "manufactured_motion.h"
-#include "scene_text.h"
+#include "support/checker.h"
+#include "support/manufactured_motion.h"
+#include "support/scene_text.h"
 
 #include <cmath>
 #include <iomanip>

@@ -41,6 +41,8 @@
 #include <hyperelastic/materials/mooney_rivlin.h>
 #include <hyperelastic/materials/polar_decomposition.h>
 
+#include "support/checker.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -63,20 +65,15 @@ namespace
 
   // ------------------------------------------------------------------ report
 
+  /// The shared reporter (support/checker.h) with each row led by the model
+  /// and the dimension.
   class Report
   {
   public:
     void
     section(const std::string &title) const
     {
-      std::printf("\n== %s\n", title.c_str());
-      std::printf("%-22s %-3s %-56s %11s  %-10s %s\n",
-                  "model",
-                  "dim",
-                  "check",
-                  "measured",
-                  "tolerance",
-                  "result");
+      checker.section(title);
     }
 
     /// Passes if measured <= tolerance (a NaN fails).
@@ -88,15 +85,8 @@ namespace
           const double       tolerance,
           const std::string &worst_case = "")
     {
-      char criterion[32];
-      std::snprintf(criterion, sizeof(criterion), "<= %.0e", tolerance);
-      record(model,
-             dim,
-             check,
-             measured,
-             criterion,
-             measured <= tolerance,
-             worst_case);
+      if (!checker.at_most(row(model, dim, check), measured, tolerance))
+        worst(worst_case);
     }
 
     /// Passes if measured > threshold.
@@ -108,17 +98,12 @@ namespace
           const double       threshold,
           const std::string &worst_case = "")
     {
-      char criterion[32];
-      std::snprintf(criterion, sizeof(criterion), "> %.0e", threshold);
-      record(model,
-             dim,
-             check,
-             measured,
-             criterion,
-             measured > threshold,
-             worst_case);
+      if (!checker.above(row(model, dim, check), measured, threshold))
+        worst(worst_case);
     }
 
+    /// A check whose criterion is not a bound on one number: the row shows
+    /// the measured value and the criterion.
     void
     record(const std::string &model,
            const int          dim,
@@ -128,29 +113,35 @@ namespace
            const bool         pass,
            const std::string &worst_case = "")
     {
-      const std::string dim_text = dim > 0 ? std::to_string(dim) + "D" : "-";
-      std::printf("%-22s %-3s %-56s %11.3e  %-10s %s\n",
-                  model.c_str(),
-                  dim_text.c_str(),
-                  check.c_str(),
-                  measured,
-                  criterion.c_str(),
-                  pass ? "PASS" : "FAIL");
-      if (!pass && !worst_case.empty())
-        std::printf("    worst case: %s\n", worst_case.c_str());
-      ++(pass ? n_passed : n_failed);
+      char value[64];
+      std::snprintf(value, sizeof(value), " (%.3e, %s)", measured,
+                    criterion.c_str());
+      if (!checker.is_true(row(model, dim, check) + value, pass))
+        worst(worst_case);
     }
 
     int
     finish() const
     {
-      std::printf("\n%u passed, %u failed\n", n_passed, n_failed);
-      return n_failed == 0 ? 0 : 1;
+      return checker.exit_code();
     }
 
   private:
-    unsigned int n_passed = 0;
-    unsigned int n_failed = 0;
+    static std::string
+    row(const std::string &model, const int dim, const std::string &check)
+    {
+      return model + (dim > 0 ? "  " + std::to_string(dim) + "D" : "") + "  " +
+             check;
+    }
+
+    void
+    worst(const std::string &worst_case) const
+    {
+      if (!worst_case.empty())
+        checker.note("worst case: " + worst_case);
+    }
+
+    hyperelastic::testing::Checker checker{true};
   };
 
   template <int dim>

@@ -12,10 +12,10 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "checker.h"
-#include "dimension_main.h"
-#include "nodal_error.h"
-#include "scene_text.h"
+#include "support/checker.h"
+#include "support/dimension_main.h"
+#include "support/nodal_error.h"
+#include "support/scene_text.h"
 
 #include <iostream>
 

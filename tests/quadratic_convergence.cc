@@ -15,9 +15,9 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "checker.h"
-#include "dimension_main.h"
-#include "scene_text.h"
+#include "support/checker.h"
+#include "support/dimension_main.h"
+#include "support/scene_text.h"
 
 #include <algorithm>
 #include <cmath>

@@ -18,11 +18,11 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "checker.h"
-#include "dimension_main.h"
-#include "manufactured_motion.h"
-#include "nodal_error.h"
-#include "scene_text.h"
+#include "support/checker.h"
+#include "support/dimension_main.h"
+#include "support/manufactured_motion.h"
+#include "support/nodal_error.h"
+#include "support/scene_text.h"
 
 #include <cmath>
 #include <iostream>

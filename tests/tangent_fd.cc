@@ -12,9 +12,9 @@
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/materials/material_registry.h>
 
-#include "box_discretisation.h"
-#include "checker.h"
-#include "random_vector.h"
+#include "support/box_discretisation.h"
+#include "support/checker.h"
+#include "support/random_vector.h"
 
 #include <string>
 

@@ -253,8 +253,8 @@ namespace hyperelastic
               else
                 for (unsigned int l = 0; l < face->n_lines(); ++l)
                   {
-                    std::array<Point<dim>, 2> ends = {face->line(l)->vertex(0),
-                                                      face->line(l)->vertex(1)};
+                    std::array<Point<dim>, 2> ends = {{face->line(l)->vertex(0),
+                                                       face->line(l)->vertex(1)}};
                     const auto                less = [](const Point<dim> &a,
                                          const Point<dim> &b) {
                       return std::lexicographical_compare(a.begin_raw(),
