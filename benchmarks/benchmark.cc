@@ -30,9 +30,9 @@
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include "../tests/analytic_bar.h"
-#include "../tests/manufactured_motion.h"
-#include "../tests/scene_text.h"
+#include "support/analytic_bar.h"
+#include "support/manufactured_motion.h"
+#include "support/scene_text.h"
 
 #include <sys/resource.h>
 
@@ -192,7 +192,7 @@ main(int argc, char *argv[])
 
       Timer      total;
       Problem<3> problem(parameters, MPI_COMM_WORLD, false);
-      const auto material = create_material<3>("neo-Hookean", parameters.material.lame);
+      const auto material = create_material<3>(parameters.material);
       if (scene == "manufactured")
         problem.set_load_editor([&](BoundaryConditions<3> &bc) {
           for (auto &d : bc.dirichlet)

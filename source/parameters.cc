@@ -4,6 +4,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/materials/material_registry.h>
 #include <hyperelastic/parameters.h>
 
 #include <algorithm>
@@ -14,13 +15,7 @@
 
 namespace hyperelastic
 {
-  using dealii::Patterns::Anything;
-  using dealii::Patterns::Bool;
-  using dealii::Patterns::Double;
-  using dealii::Patterns::Integer;
-  using dealii::Patterns::List;
-  using dealii::Patterns::MultipleSelection;
-  using dealii::Patterns::Selection;
+  using namespace entry_patterns;
 
   // ---------------------------------------------------------------- Problem
   void
@@ -125,6 +120,20 @@ namespace hyperelastic
                size(c.expressions) + " expressions",
                "needs " + std::to_string(dim) +
                  " expressions separated by ';'");
+    // Accepting inverted equilibria needs a model defined at J <= 0.
+    if (newton.inverted_elements == InvertedElements::warn)
+      {
+        const bool defined =
+          material_model(material.model).defined_for_inverted_elements;
+        if (!defined)
+          reject("Newton/Inverted elements at equilibrium",
+                 "warn",
+                 "the " + material.model +
+                   " model is not defined for inverted elements (its energy "
+                   "is infinite at J <= 0), so no state with them can be "
+                   "accepted; use 'automatic' or 'reject', or a model "
+                   "defined there (e.g. stable neo-Hookean or corotational)");
+      }
     // Two conditions on the same id and component contradict each other.
     for (unsigned int a = 0; a < loading.dirichlet.size(); ++a)
       for (unsigned int b = a + 1; b < loading.dirichlet.size(); ++b)

@@ -7,6 +7,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/mesh.h>
+#include <hyperelastic/output/inverted_cells.h>
 #include <hyperelastic/problem.h>
 #include <hyperelastic/solvers/rigid_body_modes.h>
 
@@ -47,8 +48,7 @@ namespace hyperelastic
     TimerOutput::Scope scope(timer, "mesh and setup");
     const auto         mesh_ids = create_mesh(parameters.mesh, triangulation);
 
-    material =
-      create_material<dim>(parameters.material.model, parameters.material.lame);
+    material = create_material<dim>(parameters.material);
     boundary_conditions =
       std::make_unique<BoundaryConditions<dim>>(parameters.loading, mesh_ids);
     if (load_editor)
@@ -66,11 +66,8 @@ namespace hyperelastic
     // Located once; a point outside the mesh is an input error now, not
     // after the first load step.
     if (!parameters.output.points.empty())
-      point_values =
-        std::make_unique<PointValues<dim>>(output_points<dim>(parameters.output),
-                                           dof_handler,
-                                           mapping,
-                                           comm);
+      point_values = std::make_unique<PointValues<dim>>(
+        output_points<dim>(parameters.output), dof_handler, mapping, comm);
 
     boundary_conditions->make_constraints(mapping,
                                           dof_handler,
@@ -112,6 +109,10 @@ namespace hyperelastic
       *material,
       *boundary_conditions,
       parameters.problem.fast_p1_assembly);
+    // A load without a potential makes the tangent non-symmetric.
+    linear_solver.set_symmetric(elasticity->is_conservative());
+    if (parameters.output.write_vtu)
+      material3d = material->three_dimensional_twin();
     writer = std::make_unique<OutputWriter<dim>>(parameters.output, comm);
 
     // Dofs on each Dirichlet boundary id with the components prescribed there
@@ -164,13 +165,20 @@ namespace hyperelastic
           << dof_handler.n_dofs() << " unknowns, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n"
           << "material: " << material->name()
-          << " (mu = " << parameters.material.lame.mu
-          << ", lambda = " << parameters.material.lame.lambda << ")\n"
-          << "linear solver: "
-          << (parameters.linear_solver.type == LinearSolverType::direct
-                ? parameters.linear_solver.direct_solver
-                : std::string("CG with ML AMG (rigid-body near-null space)"))
-          << std::endl;
+          << " (mu = " << material->small_strain_moduli().mu
+          << ", lambda = " << material->small_strain_moduli().lambda << ")\n"
+          << "linear solver: " << linear_solver.description() << std::endl;
+    if (!elasticity->load_terms().empty())
+      {
+        pcout << "loads:";
+        for (const auto &term : elasticity->load_terms())
+          pcout << (&term == &elasticity->load_terms().front() ? " " : ", ")
+                << term->name()
+                << (!term->depends_on_solution() ? " (dead)"
+                    : term->is_conservative()    ? " (follower, conservative)"
+                                                 : " (follower)");
+        pcout << std::endl;
+      }
     warn_about_volumetric_locking();
   }
 
@@ -181,7 +189,7 @@ namespace hyperelastic
     // Linear simplices have too few displacement modes to deform at nearly
     // constant volume: when lambda >> mu they lock (far too stiff in
     // bending and shear). Warn; it is not an error.
-    const double nu = parameters.material.lame.poisson_ratio();
+    const double nu = material->small_strain_moduli().poisson_ratio();
     if (parameters.problem.fe_degree == 1 && nu > 0.45)
       pcout << "warning: Poisson's ratio " << nu
             << " > 0.45 with P1 elements: expect volumetric locking (too "
@@ -254,6 +262,13 @@ namespace hyperelastic
   }
 
   template <int dim>
+  bool
+  Problem<dim>::has_potential() const
+  {
+    return elasticity->is_conservative();
+  }
+
+  template <int dim>
   double
   Problem<dim>::directional_derivative() const
   {
@@ -275,6 +290,15 @@ namespace hyperelastic
     TrialPoint point;
     if (check == TrialCheck::none)
       return point;
+    if (check == TrialCheck::residual)
+      {
+        point.residual = free_residual_norm(point.residual_noise);
+        point.min_J = elasticity->evaluate(u_ghosted, load_factor, false).min_J;
+        point.admissible =
+          (material->defined_for_inverted_elements() || point.min_J > 0.) &&
+          std::isfinite(point.residual);
+        return point;
+      }
     const EnergyEvaluation e =
       elasticity->evaluate(u_ghosted, load_factor, check == TrialCheck::energy);
     point.min_J = e.min_J;
@@ -303,17 +327,26 @@ namespace hyperelastic
   Problem<dim>::residual_norms()
   {
     TimerOutput::Scope scope(timer, "residual");
-    const double       noise = elasticity->assemble_forces(u_ghosted,
-                                                     load_factor,
-                                                     internal_force,
-                                                     external_force);
-    residual                 = internal_force;
+    double             noise;
+    const double       norm = free_residual_norm(noise);
+    force_scale             = std::max(
+      {force_scale, internal_force.l2_norm(), external_force.l2_norm()});
+    return {norm, force_scale, noise};
+  }
+
+  template <int dim>
+  double
+  Problem<dim>::free_residual_norm(double &noise)
+  {
+    noise    = elasticity->assemble_forces(u_ghosted,
+                                        load_factor,
+                                        internal_force,
+                                        external_force);
+    residual = internal_force;
     residual -= external_force;
     VectorType free_residual = residual;
     homogeneous_constraints.set_zero(free_residual);
-    force_scale = std::max(
-      {force_scale, internal_force.l2_norm(), external_force.l2_norm()});
-    return {free_residual.l2_norm(), force_scale, noise};
+    return free_residual.l2_norm();
   }
 
   template <int dim>
@@ -327,18 +360,49 @@ namespace hyperelastic
   void
   Problem<dim>::verify_converged_state()
   {
-    // An equilibrium with inverted elements is not a physical state, even
-    // for models that are defined there (St. Venant-Kirchhoff past its
-    // compressive limit point, or a corotational element turned inside out).
-    converged_min_J = elasticity->evaluate(u_ghosted, load_factor, false).min_J;
-    if (!(converged_min_J > 0.))
+    // A model defined at J <= 0 (stable neo-Hookean, corotational, St.
+    // Venant-Kirchhoff, linear elastic) can have equilibria with inverted
+    // elements as its correct discrete answer, for example near the clamped
+    // edges of a crushed body: accepted with a warning unless the scene
+    // asks to reject them. For a model undefined there such a state is
+    // never a solution.
+    const InvertedCells<dim> inverted =
+      find_inverted_cells(mapping, dof_handler, u_ghosted);
+    converged_min_J          = inverted.min_J;
+    converged_inverted_cells = inverted.n_cells;
+    if (inverted.n_cells == 0)
+      return;
+
+    const bool         defined = material->defined_for_inverted_elements();
+    std::ostringstream where;
+    where << inverted.n_cells << " inverted cell"
+          << (inverted.n_cells == 1 ? "" : "s")
+          << " (J <= 0; smallest J = " << inverted.min_J
+          << " in the cell centred at (" << inverted.worst_cell_center << "))";
+    if (parameters.newton.accepts_inverted_elements(defined))
       {
-        std::ostringstream message;
-        message << "Newton converged to a state with inverted elements "
-                << "(smallest J = " << converged_min_J
-                << "): the load exceeds what the model can carry";
-        throw ConvergenceFailure(message.str());
+        pcout << "   warning: equilibrium with " << where.str()
+              << ", accepted: the " << material->name()
+              << " model is defined there ('Newton/Inverted elements at "
+                 "equilibrium = warn')"
+              << std::endl;
+        return;
       }
+    std::ostringstream message;
+    message << "Newton converged to an equilibrium with " << where.str();
+    if (defined)
+      message << ", rejected by 'Newton/Inverted elements at equilibrium = "
+                 "reject'; the "
+              << material->name()
+              << " model is defined for J <= 0 and this can be its correct "
+                 "discrete answer: set that entry to 'warn' to accept it";
+    else
+      message << ", where the " << material->name()
+              << " model is not defined (infinite energy): not a solution; "
+                 "keep 'Newton/Line search = true' (its J > 0 filter keeps "
+                 "this model's iterates admissible) or use a model defined "
+                 "for J <= 0 (stable neo-Hookean, corotational)";
+    throw ConvergenceFailure(message.str());
   }
 
   // ------------------------------------------------------- SteppedSystem
@@ -388,6 +452,7 @@ namespace hyperelastic
     s.residual          = result.history.back().residual;
     s.energy            = elasticity->total_energy(u_ghosted, load_factor);
     s.min_J             = converged_min_J;
+    s.inverted_cells    = converged_inverted_cells;
 
     // residual = f_int - f_ext at the converged state: on supported dofs it
     // is the force the support exerts on the body.
@@ -429,8 +494,8 @@ namespace hyperelastic
     if (parameters.output.write_vtu)
       {
         TimerOutput::Scope output_scope(timer, "output");
-        double             min_J;
-        const CellFields   fields = elasticity->cell_fields(u_ghosted, min_J);
+        const CellFields   fields = compute_cell_fields(
+          dof_handler, mapping, *material, *material3d, u_ghosted);
         writer->write_fields(
           step.step, load_factor, dof_handler, mapping, u_ghosted, fields);
       }
@@ -478,8 +543,8 @@ namespace hyperelastic
     setup();
     if (parameters.output.write_vtu)
       {
-        double           min_J;
-        const CellFields fields = elasticity->cell_fields(u_ghosted, min_J);
+        const CellFields fields = compute_cell_fields(
+          dof_handler, mapping, *material, *material3d, u_ghosted);
         writer->write_fields(0, 0., dof_handler, mapping, u_ghosted, fields);
       }
 

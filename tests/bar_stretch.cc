@@ -18,8 +18,9 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "analytic_bar.h"
-#include "scene_text.h"
+#include "support/analytic_bar.h"
+#include "support/checker.h"
+#include "support/scene_text.h"
 
 #include <cmath>
 #include <iomanip>
@@ -36,29 +37,6 @@ namespace
   // residual test alone would stop Newton early).
   double mu = 1., lambda = 1.;
   bool   fine = false;
-
-  struct Checker
-  {
-    unsigned int passed = 0, failed = 0;
-    bool         print;
-
-    void
-    check(const std::string &what,
-          const double       computed,
-          const double       exact,
-          const double       scale)
-    {
-      const double error = std::abs(computed - exact) / scale;
-      const bool   ok    = error < tolerance;
-      (ok ? passed : failed)++;
-      if (print)
-        std::cout << "  " << std::left << std::setw(40) << what << std::right
-                  << std::setprecision(13) << std::setw(22) << computed
-                  << std::setw(22) << exact << std::setprecision(2)
-                  << std::scientific << std::setw(10) << error
-                  << std::defaultfloat << (ok ? "  PASS" : "  FAIL") << '\n';
-    }
-  };
 
   std::string
   number(const double x)
@@ -101,11 +79,11 @@ namespace
     else
       text +=
         subsection("Mesh", entry("Source", "file") + entry("File", mesh_file));
-    text +=
-      subsection("Material",
-                 entry("Model", model) + entry("Elastic constants", "Lame") +
-                   entry("Shear modulus", number(mu)) +
-                   entry("Lame lambda", number(lambda)));
+    text += material_section(model,
+                             entry("Elastic constants", "Lame") +
+                               entry("Shear modulus", number(mu)) +
+                               entry("Lame lambda", number(lambda)),
+                             lame_parameters(mu, lambda));
     text += subsection("Loading", entry("Number of load steps", "5"));
     // Symmetry rollers on the faces x = 0 (id 0), y = 0 (id 2), z = 0 (id 4).
     const int off = id_offset(mesh_file);
@@ -158,9 +136,8 @@ namespace
     problem.run();
     const StepSummary<dim> &s = problem.summaries().back();
 
-    if (checker.print)
-      std::cout << name << " (" << s.newton_iterations
-                << " Newton iterations in the last step)\n";
+    checker.section(name + " (" + std::to_string(s.newton_iterations) +
+                    " Newton iterations in the last step)");
     if (fine)
       {
         unsigned int newton = 0, krylov = 0;
@@ -169,21 +146,21 @@ namespace
             newton += step.newton_iterations;
             krylov += step.linear_iterations;
           }
-        const double per_newton = double(krylov) / newton;
-        const bool   ok         = per_newton <= 25.;
-        (ok ? checker.passed : checker.failed)++;
-        if (checker.print)
-          std::cout << "  CG iterations per Newton iteration " << per_newton
-                    << " (bound 25, " << problem.get_dof_handler().n_dofs()
-                    << " unknowns)" << (ok ? "  PASS" : "  FAIL") << '\n';
+        checker.at_most("CG iterations per Newton iteration (" +
+                          std::to_string(problem.get_dof_handler().n_dofs()) +
+                          " unknowns)",
+                        double(krylov) / newton,
+                        25.);
       }
     const double l1 = (s.deformed_max[0] - s.deformed_min[0]) / length;
-    checker.check("axial stretch l1", l1, l1_target, l1_target);
+    checker.close("axial stretch l1", l1, l1_target, l1_target,
+                    tolerance);
     for (unsigned int d = 1; d < dim; ++d)
-      checker.check("lateral stretch l2 (" + std::string(1, "xyz"[d]) + ")",
+      checker.close("lateral stretch l2 (" + std::string(1, "xyz"[d]) + ")",
                     s.deformed_max[d] - s.deformed_min[d],
                     exact.l2,
-                    exact.l2);
+                    exact.l2,
+                    tolerance);
     const double force_scale = std::abs(exact.P11) * area;
     for (const auto &[id, force] : s.reactions)
       {
@@ -194,16 +171,18 @@ namespace
           expected = -exact.P11 * area;
         if (id == types::boundary_id(1 + off))
           expected = exact.P11 * area;
-        checker.check("reaction x on boundary " + std::to_string(id),
+        checker.close("reaction x on boundary " + std::to_string(id),
                       force[0],
                       expected,
-                      force_scale);
+                      force_scale,
+                    tolerance);
         for (unsigned int d = 1; d < dim; ++d)
-          checker.check("reaction " + std::string(1, "xyz"[d]) +
+          checker.close("reaction " + std::string(1, "xyz"[d]) +
                           " on boundary " + std::to_string(id),
                         force[d],
                         0.,
-                        force_scale);
+                        force_scale,
+                    tolerance);
       }
   }
 
@@ -253,8 +232,8 @@ main(int argc, char *argv[])
          (mesh_file.empty() ? "" : "_gmsh") + (soft ? "_soft" : "") +
          (fine ? "_fine" : "") + "_np" + std::to_string(n_ranks);
 
-  Checker checker;
-  checker.print = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  Checker checker(dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
+                  0);
   const int status = run_and_report(
     [&]() {
       if (dim == 2)
@@ -263,8 +242,5 @@ main(int argc, char *argv[])
         run_all<3>(checker, model, solver, degree, mesh_file, tag);
     },
     MPI_COMM_WORLD);
-  if (checker.print)
-    std::cout << checker.passed << " passed, " << checker.failed << " failed"
-              << std::endl;
-  return (status != 0 || checker.failed > 0 || checker.passed == 0) ? 1 : 0;
+  return checker.exit_code(status);
 }

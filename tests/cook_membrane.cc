@@ -16,7 +16,7 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "checker.h"
+#include "support/checker.h"
 
 #include <cmath>
 #include <fstream>

@@ -11,11 +11,11 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "scene_text.h"
+#include "support/checker.h"
+#include "support/dimension_main.h"
+#include "support/scene_text.h"
 
 #include <cmath>
-#include <iomanip>
-#include <iostream>
 
 using namespace hyperelastic;
 using namespace hyperelastic::testing;
@@ -25,8 +25,8 @@ namespace
   constexpr double L = 3., E = 2., b = 0.1, area = 1.;
 
   template <int dim>
-  unsigned int
-  run(const bool print)
+  void
+  run(Checker &checker)
   {
     const bool        three = dim == 3;
     const std::string text =
@@ -67,37 +67,21 @@ namespace
       {"total potential energy",
        s.energy,
        -b * b * L * L * L * area / (6. * E)}};
-    unsigned int failed = 0;
     for (const auto &c : checks)
-      {
-        const double error = std::abs(c.computed - c.exact) / std::abs(c.exact);
-        const bool   ok    = error < 1e-8;
-        failed += ok ? 0 : 1;
-        if (print)
-          std::cout << dim << "D " << std::left << std::setw(26) << c.name
-                    << std::right << std::setprecision(14) << std::setw(22)
-                    << c.computed << std::setw(22) << c.exact
-                    << std::setprecision(2) << std::scientific << std::setw(10)
-                    << error << std::defaultfloat << (ok ? "  PASS" : "  FAIL")
-                    << '\n';
-      }
-    return failed;
+      checker.close(std::to_string(dim) + "D " + c.name,
+                    c.computed,
+                    c.exact,
+                    std::abs(c.exact),
+                    1e-8);
   }
 } // namespace
 
 int
 main(int argc, char *argv[])
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               print =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  const int    dim    = argc > 1 ? std::stoi(argv[1]) : 3;
-  unsigned int failed = 0;
-  const int    status =
-    run_and_report([&]() { failed = dim == 2 ? run<2>(print) : run<3>(print); },
-                   MPI_COMM_WORLD);
-  if (print)
-    std::cout << (status == 0 ? 3 - failed : 0) << " passed, "
-              << (status == 0 ? failed : 3) << " failed" << std::endl;
-  return (status != 0 || failed > 0) ? 1 : 0;
+  return run_checks_for_dimension(
+    argc,
+    argv,
+    [](Checker &checker, bool) { run<2>(checker); },
+    [](Checker &checker, bool) { run<3>(checker); });
 }

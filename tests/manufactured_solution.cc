@@ -17,9 +17,9 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "checker.h"
-#include "manufactured_motion.h"
-#include "scene_text.h"
+#include "support/checker.h"
+#include "support/manufactured_motion.h"
+#include "support/scene_text.h"
 
 #include <cmath>
 #include <iomanip>
@@ -50,24 +50,28 @@ namespace
       subsection("Mesh",
                  entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
                    entry("Upper corner", three ? "1, 1, 1" : "1, 1") +
-                   entry("Subdivisions", three ? N + ", " + N + ", " + N : N + ", " + N)) +
-      subsection("Material",
-                 entry("Model", model) + entry("Elastic constants", "Lame") +
-                   entry("Shear modulus", "1") + entry("Lame lambda", "1.5")) +
+                   entry("Subdivisions",
+                         three ? N + ", " + N + ", " + N : N + ", " + N)) +
+      material_section(model,
+                       entry("Elastic constants", "Lame") +
+                         entry("Shear modulus", "1") +
+                         entry("Lame lambda", "1.5"),
+                       lame_parameters(1., 1.5)) +
       subsection("Loading", entry("Number of load steps", "4")) +
       tight_solver("cg") +
       // Plain Newton: the test is about the discretisation, and the energy
       // line search has nothing to gain near the solution.
       subsection("Newton", entry("Line search", "false")) +
-      subsection("Output", entry("Write VTU", "false") + entry("Verbose", "false") +
-                             entry("Directory", "manufactured_output"));
+      subsection("Output",
+                 entry("Write VTU", "false") + entry("Verbose", "false") +
+                   entry("Directory", "manufactured_output"));
     // Placeholders on every side, replaced by the exact displacement below.
     for (unsigned int id = 0; id < 2 * dim; ++id)
       text += dirichlet(id + 1, id, three ? "x, y, z" : "x, y", three ? "0; 0; 0" : "0; 0");
 
     Parameters parameters;
     parameters.read_from_string(text);
-    const auto material = create_material<dim>(model, parameters.material.lame);
+    const auto   material = create_material<dim>(parameters.material);
     Problem<dim> problem(parameters, MPI_COMM_WORLD, false);
     problem.set_load_editor([&](BoundaryConditions<dim> &bc) {
       for (auto &d : bc.dirichlet)

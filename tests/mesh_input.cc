@@ -29,9 +29,9 @@
 #include <hyperelastic/mesh/mesh.h>
 #include <hyperelastic/problem.h>
 
-#include "checker.h"
-#include "dimension_main.h"
-#include "scene_text.h"
+#include "support/checker.h"
+#include "support/dimension_main.h"
+#include "support/scene_text.h"
 
 #include <cmath>
 #include <fstream>

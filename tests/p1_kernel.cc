@@ -9,14 +9,14 @@
 // Usage: mpirun -np N p1_kernel
 #include <deal.II/base/mpi.h>
 
-#include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/assembly/elasticity_operator.h>
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/loads/boundary_conditions.h>
+#include <hyperelastic/materials/material_registry.h>
 
-#include "box_discretisation.h"
-#include "checker.h"
-#include "random_vector.h"
-
+#include "support/box_discretisation.h"
+#include "support/checker.h"
+#include "support/random_vector.h"
 
 using namespace hyperelastic;
 using namespace hyperelastic::testing;
@@ -140,13 +140,9 @@ main(int argc, char *argv[])
   Checker check(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
   const int status = run_and_report(
     [&]() {
-      for (const std::string model : {"linear elastic",
-                                      "St. Venant-Kirchhoff",
-                                      "corotational",
-                                      "neo-Hookean",
-                                      "stable neo-Hookean",
-                                      "decoupled neo-Hookean"})
+      for (const MaterialModel &registered : material_models())
         {
+          const std::string &model = registered.name;
           compare<2>(model, false, check);
           compare<3>(model, false, check);
         }

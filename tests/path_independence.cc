@@ -12,9 +12,9 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "checker.h"
-#include "dimension_main.h"
-#include "scene_text.h"
+#include "support/checker.h"
+#include "support/dimension_main.h"
+#include "support/scene_text.h"
 
 #include <cmath>
 #include <iostream>
@@ -30,21 +30,31 @@ namespace
   {
     const bool three = dim == 3;
     return small_bar(dim, 1) +
-           subsection("Material",
-                      entry("Model", model) + entry("Young's modulus", "1") +
-                        entry("Poisson's ratio", "0.3")) +
+           material_section(model,
+                            entry("Young's modulus", "1") +
+                              entry("Poisson's ratio", "0.3"),
+                            LameParameters::from_young_poisson(1., 0.3)) +
            subsection("Loading",
                       entry("Number of load steps", std::to_string(steps)) +
-                        entry("Body force", three ? "0; 0; -0.02*t" : "0; -0.02*t")) +
-           dirichlet(1, 0, three ? "x, y, z" : "x, y", three ? "0; 0; 0" : "0; 0") +
-           dirichlet(2, 1, three ? "x, y, z" : "x, y", three ? "0.3*t; 0.2*t; 0.1*t" : "0.3*t; 0.2*t") +
+                        entry("Body force",
+                              three ? "0; 0; -0.02*t" : "0; -0.02*t")) +
+           dirichlet(1,
+                     0,
+                     three ? "x, y, z" : "x, y",
+                     three ? "0; 0; 0" : "0; 0") +
+           dirichlet(2,
+                     1,
+                     three ? "x, y, z" : "x, y",
+                     three ? "0.3*t; 0.2*t; 0.1*t" : "0.3*t; 0.2*t") +
            subsection("Traction 1",
                       entry("Boundary id", three ? "5" : "3") +
-                        entry("Traction", three ? "0.01*t; 0; 0" : "0.01*t; 0")) +
+                        entry("Traction",
+                              three ? "0.01*t; 0; 0" : "0.01*t; 0")) +
            tight_solver("cg") +
            subsection("Output",
                       entry("Directory", "path_independence_output") +
-                        entry("Write VTU", "false") + entry("Verbose", "false"));
+                        entry("Write VTU", "false") +
+                        entry("Verbose", "false"));
   }
 
   struct State

@@ -12,8 +12,8 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "checker.h"
-#include "scene_text.h"
+#include "support/checker.h"
+#include "support/scene_text.h"
 
 #include <cmath>
 #include <fstream>

@@ -15,9 +15,9 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "checker.h"
-#include "dimension_main.h"
-#include "scene_text.h"
+#include "support/checker.h"
+#include "support/dimension_main.h"
+#include "support/scene_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,19 +41,26 @@ namespace
   {
     const bool three = dim == 3;
     return small_bar(dim, degree) +
-           subsection("Material",
-                      entry("Model", model) + entry("Young's modulus", "1") +
-                        entry("Poisson's ratio", "0.3")) +
+           material_section(model,
+                            entry("Young's modulus", "1") +
+                              entry("Poisson's ratio", "0.3"),
+                            LameParameters::from_young_poisson(1., 0.3)) +
            subsection("Loading",
-                      entry("Number of load steps", "2") + entry("Constants", "a = 1.0") +
-                        entry("Body force", three ? "0; 0; -0.05*t" : "0; -0.05*t")) +
-           dirichlet(1, 0, three ? "x, y, z" : "x, y", three ? "0; 0; 0" : "0; 0") +
+                      entry("Number of load steps", "2") +
+                        entry("Constants", "a = 1.0") +
+                        entry("Body force",
+                              three ? "0; 0; -0.05*t" : "0; -0.05*t")) +
+           dirichlet(1,
+                     0,
+                     three ? "x, y, z" : "x, y",
+                     three ? "0; 0; 0" : "0; 0") +
            dirichlet(2,
                      1,
                      three ? "x, y, z" : "x, y",
-                     three ? "0.3*t; (cos(a*t) - 1)*(y - 0.5) - sin(a*t)*(z - 0.5);"
-                             " sin(a*t)*(y - 0.5) + (cos(a*t) - 1)*(z - 0.5)" :
-                             "0.3*t; 1.0*t") +
+                     three
+                       ? "0.3*t; (cos(a*t) - 1)*(y - 0.5) - sin(a*t)*(z - 0.5);"
+                         " sin(a*t)*(y - 0.5) + (cos(a*t) - 1)*(z - 0.5)"
+                       : "0.3*t; 1.0*t") +
            subsection("Newton",
                       entry("Max iterations", "30") +
                         entry("Absolute residual tolerance", "1e-15") +
@@ -65,7 +72,8 @@ namespace
            subsection("Linear solver", entry("Type", "direct")) +
            subsection("Output",
                       entry("Directory", "quadratic_convergence_output") +
-                        entry("Write VTU", "false") + entry("Verbose", "false"));
+                        entry("Write VTU", "false") +
+                        entry("Verbose", "false"));
   }
 
   template <int dim>

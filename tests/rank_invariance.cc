@@ -11,7 +11,8 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "scene_text.h"
+#include "support/checker.h"
+#include "support/scene_text.h"
 
 #include <cmath>
 #include <iomanip>
@@ -165,8 +166,8 @@ namespace
 
   /// Returns {numbers compared, numbers that differ}.
   template <int dim>
-  std::pair<unsigned int, unsigned int>
-  compare(const bool twisted, const unsigned int degree, const bool print)
+  void
+  compare(Checker &checker, const bool twisted, const unsigned int degree)
   {
     const std::string tag = std::to_string(dim) + "d_" +
                             (twisted ? "twisted" : "bar") + "_P" +
@@ -176,7 +177,6 @@ namespace
     const Numbers parallel =
       solve<dim>(scene(dim, twisted, degree, tag + "_np" + std::to_string(n_ranks)),
                  MPI_COMM_WORLD);
-    unsigned int failed = 0, checked = 0;
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
         const Numbers serial =
@@ -186,32 +186,18 @@ namespace
         double scale = 0.;
         for (const double v : serial.values)
           scale = std::max(scale, std::abs(v));
-        if (print)
-          std::cout << tag << ": " << n_ranks << " ranks against 1\n";
+        checker.section(tag + ": " + std::to_string(n_ranks) +
+                        " ranks against 1");
         AssertThrow(serial.values.size() == parallel.values.size(),
                     ExcMessage(
                       "the runs produced different numbers of values"));
         for (unsigned int i = 0; i < serial.values.size(); ++i)
-          {
-            const double error =
-              std::abs(parallel.values[i] - serial.values[i]) /
-              std::max(std::abs(serial.values[i]), 1e-3 * scale);
-            const bool ok = error < tolerance;
-            failed += ok ? 0 : 1;
-            if (print)
-              std::cout << "  " << std::left << std::setw(32) << serial.names[i]
-                        << std::right << std::setprecision(14) << std::setw(24)
-                        << parallel.values[i] << std::setw(24)
-                        << serial.values[i] << std::setprecision(2)
-                        << std::scientific << std::setw(10) << error
-                        << std::defaultfloat << (ok ? "  PASS" : "  FAIL")
-                        << '\n';
-          }
-        checked = serial.values.size();
+          checker.close(serial.names[i],
+                        parallel.values[i],
+                        serial.values[i],
+                        std::max(std::abs(serial.values[i]), 1e-3 * scale),
+                        tolerance);
       }
-    return Utilities::MPI::broadcast(MPI_COMM_WORLD,
-                                     std::make_pair(checked, failed),
-                                     0);
   }
 } // namespace
 
@@ -219,23 +205,20 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool   print  = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  unsigned int failed = 0, n_checks = 0;
-  const int    status = run_and_report(
+  // The comparison runs on rank 0 (which also solves serially); the counts
+  // are summed over the ranks so that every rank exits alike.
+  Checker   checker(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+  const int status = run_and_report(
     [&]() {
       // P1 homogeneous and twisted bars, and the twisted bars with P2.
-      for (const auto &[twisted, degree] :
-           {std::make_pair(false, 1u), std::make_pair(true, 1u), std::make_pair(true, 2u)})
-        for (const auto &[checked, differ] :
-             {compare<2>(twisted, degree, print), compare<3>(twisted, degree, print)})
-          {
-            n_checks += checked;
-            failed += differ;
-          }
+      for (const auto &[twisted, degree] : {std::make_pair(false, 1u),
+                                            std::make_pair(true, 1u),
+                                            std::make_pair(true, 2u)})
+        {
+          compare<2>(checker, twisted, degree);
+          compare<3>(checker, twisted, degree);
+        }
     },
     MPI_COMM_WORLD);
-  if (print)
-    std::cout << (n_checks - std::min(n_checks, failed)) << " passed, "
-              << failed << " failed" << std::endl;
-  return (status != 0 || failed > 0 || n_checks == 0) ? 1 : 0;
+  return checker.exit_code(status, MPI_COMM_WORLD);
 }

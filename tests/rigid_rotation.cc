@@ -18,11 +18,11 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "checker.h"
-#include "dimension_main.h"
-#include "manufactured_motion.h"
-#include "nodal_error.h"
-#include "scene_text.h"
+#include "support/checker.h"
+#include "support/dimension_main.h"
+#include "support/manufactured_motion.h"
+#include "support/nodal_error.h"
+#include "support/scene_text.h"
 
 #include <cmath>
 #include <iostream>
@@ -78,10 +78,13 @@ namespace
                  entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
                    entry("Upper corner", three ? "2, 1, 1" : "2, 1") +
                    entry("Subdivisions", three ? "4, 2, 2" : "8, 4")) +
-      subsection("Material",
-                 entry("Model", model) + entry("Elastic constants", "Lame") +
-                   entry("Shear modulus", "1") + entry("Lame lambda", "1.5")) +
-      subsection("Loading", entry("Number of load steps", std::to_string(steps))) +
+      material_section(model,
+                       entry("Elastic constants", "Lame") +
+                         entry("Shear modulus", "1") +
+                         entry("Lame lambda", "1.5"),
+                       lame_parameters(1., 1.5)) +
+      subsection("Loading",
+                 entry("Number of load steps", std::to_string(steps))) +
       // The placeholder is replaced by the rotation below.
       dirichlet(1, 0, three ? "x, y, z" : "x, y", three ? "0; 0; 0" : "0; 0") +
       tight_solver("cg") +
@@ -98,7 +101,7 @@ namespace
 
     // Stress at degree + 1 points per cell (the field is affine per cell for
     // P1; P2 has 3 (2D) or 4 (3D) points), node positions.
-    const auto               material = create_material<dim>(model, parameters.material.lame);
+    const auto material = create_material<dim>(parameters.material);
     const DoFHandler<dim>   &dof_handler = problem.get_dof_handler();
     const MappingFE<dim>     mapping(FE_SimplexP<dim>(1));
     const QGaussSimplex<dim> quadrature(degree + 1);

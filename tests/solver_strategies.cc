@@ -13,8 +13,8 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "checker.h"
-#include "scene_text.h"
+#include "support/checker.h"
+#include "support/scene_text.h"
 
 using namespace dealii;
 using namespace hyperelastic;

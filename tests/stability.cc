@@ -20,9 +20,9 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
 
-#include "analytic_bar.h"
-#include "checker.h"
-#include "scene_text.h"
+#include "support/analytic_bar.h"
+#include "support/checker.h"
+#include "support/scene_text.h"
 
 #include <cmath>
 #include <iostream>

@@ -26,6 +26,8 @@
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/materials/tangent_projection.h>
 
+#include "support/checker.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -46,8 +48,8 @@ namespace
     return std::numeric_limits<double>::infinity();
   }
 
-  unsigned int n_passed = 0;
-  unsigned int n_failed = 0;
+  // The shared reporter; the dimension leads each row.
+  hyperelastic::testing::Checker checker(true);
 
   /// Passes if measured <= tolerance (a NaN fails).
   void
@@ -56,14 +58,7 @@ namespace
               const double       measured,
               const double       tolerance)
   {
-    const bool pass = measured <= tolerance;
-    std::printf("%s  %dD  %-68s %11.3e <= %.0e\n",
-                pass ? "PASS" : "FAIL",
-                dim,
-                what.c_str(),
-                measured,
-                tolerance);
-    ++(pass ? n_passed : n_failed);
+    checker.at_most(std::to_string(dim) + "D  " + what, measured, tolerance);
   }
 
   /// Passes if measured < bound (a NaN fails).
@@ -73,21 +68,13 @@ namespace
              const double       measured,
              const double       bound)
   {
-    const bool pass = measured < bound;
-    std::printf("%s  %dD  %-68s %11.3e <  %.0e\n",
-                pass ? "PASS" : "FAIL",
-                dim,
-                what.c_str(),
-                measured,
-                bound);
-    ++(pass ? n_passed : n_failed);
+    checker.below(std::to_string(dim) + "D  " + what, measured, bound);
   }
 
   void
   check_true(const int dim, const std::string &what, const bool pass)
   {
-    std::printf("%s  %dD  %s\n", pass ? "PASS" : "FAIL", dim, what.c_str());
-    ++(pass ? n_passed : n_failed);
+    checker.is_true(std::to_string(dim) + "D  " + what, pass);
   }
 
   // ------------------------------------------------------- small matrices
@@ -639,7 +626,8 @@ namespace
   run()
   {
     const LameParameters lame = LameParameters::from_young_poisson(1., 0.3);
-    std::printf("\n== %dD (mu = %g, lambda = %g)\n", dim, lame.mu, lame.lambda);
+    checker.section(std::to_string(dim) + "D (mu = " + std::to_string(lame.mu) +
+                    ", lambda = " + std::to_string(lame.lambda) + ")");
     check_psd_tangents_unchanged<dim>(lame);
     check_compressed_tangents<dim>(lame);
     check_eigen_decomposition<dim * dim>(dim);
@@ -661,9 +649,8 @@ main()
     }
   catch (const std::exception &e)
     {
-      std::printf("FAIL  exception: %s\n", e.what());
-      return 1;
+      checker.is_true(std::string("no exception (") + e.what() + ")", false);
+      return checker.exit_code(1);
     }
-  std::printf("\n%u passed, %u failed\n", n_passed, n_failed);
-  return n_failed == 0 ? 0 : 1;
+  return checker.exit_code();
 }

@@ -12,15 +12,16 @@
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/lac/affine_constraints.h>
 
-#include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/loads/boundary_conditions.h>
+#include <hyperelastic/materials/material.h>
+#include <hyperelastic/output/cell_fields.h>
+#include <hyperelastic/output/output.h>
+#include <hyperelastic/output/point_values.h>
+#include <hyperelastic/parameters.h>
 #include <hyperelastic/solvers/linear_solver.h>
 #include <hyperelastic/solvers/load_stepping.h>
-#include <hyperelastic/materials/material.h>
 #include <hyperelastic/solvers/newton_solver.h>
-#include <hyperelastic/output/output.h>
-#include <hyperelastic/parameters.h>
-#include <hyperelastic/output/point_values.h>
 
 #include <functional>
 #include <map>
@@ -80,6 +81,13 @@ namespace hyperelastic
       return linear_solver.n_preconditioner_setups();
     }
 
+    /// Which linear solver runs (the run header's line).
+    std::string
+    linear_solver_description() const
+    {
+      return linear_solver.description();
+    }
+
     /// The tangent matrix of the last linearization (for benchmarks).
     const MatrixType &
     tangent_matrix() const
@@ -102,6 +110,8 @@ namespace hyperelastic
     solve_linearization(double forcing) override;
     bool
     is_linear() const override;
+    bool
+    has_potential() const override;
     double
     directional_derivative() const override;
     TrialPoint
@@ -134,6 +144,11 @@ namespace hyperelastic
     summarize(const LoadStep &step, const NewtonResult &newton_result);
     void
     write_fields(unsigned int step);
+    /// Assembles the forces at u_ghosted into internal_force, external_force
+    /// and residual; returns the residual norm on the free unknowns and its
+    /// round-off level in @p noise.
+    double
+    free_residual_norm(double &noise);
 
     const Parameters           parameters;
     const MPI_Comm             comm;
@@ -147,15 +162,18 @@ namespace hyperelastic
     dealii::IndexSet                                       owned_dofs;
     dealii::IndexSet                                       relevant_dofs;
 
-    std::unique_ptr<Material<dim>>           material;
-    std::unique_ptr<BoundaryConditions<dim>> boundary_conditions;
+    std::unique_ptr<Material<dim>> material;
+    /// The same model in 3D, for the plane-strain stress in the output
+    /// (null without VTU output).
+    std::unique_ptr<Material<3>>                   material3d;
+    std::unique_ptr<BoundaryConditions<dim>>       boundary_conditions;
     std::function<void(BoundaryConditions<dim> &)> load_editor;
-    std::unique_ptr<ElasticityOperator<dim>> elasticity;
-    std::unique_ptr<OutputWriter<dim>>       writer;
+    std::unique_ptr<ElasticityOperator<dim>>       elasticity;
+    std::unique_ptr<OutputWriter<dim>>             writer;
     /// The points of 'Output/Points', located once (null if there are none).
     std::unique_ptr<PointValues<dim>> point_values;
-    LinearSolver                             linear_solver;
-    NewtonSolver                             newton;
+    LinearSolver                      linear_solver;
+    NewtonSolver                      newton;
 
     /// Dirichlet constraints: with the increment to the prescribed values
     /// (first iteration of a load step) and homogeneous (later iterations);
@@ -183,8 +201,10 @@ namespace hyperelastic
     /// Running maxima of the force and displacement norms (Newton's scales).
     double force_scale   = 0.;
     double solution_size = 0.;
-    /// Smallest J of the last converged state.
-    double converged_min_J = 1.;
+    /// Smallest J of the last converged state, and how many cells have
+    /// J <= 0 there (non-zero only when such states are accepted).
+    double                           converged_min_J          = 1.;
+    dealii::types::global_cell_index converged_inverted_cells = 0;
 
     /// The last converged state, to return to after a failed load step.
     struct ConvergedState

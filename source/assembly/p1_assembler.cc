@@ -6,12 +6,11 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe.h>
 
+#include <hyperelastic/assembly/p1_assembler.h>
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/materials/tangent_projection.h>
-#include <hyperelastic/assembly/p1_assembler.h>
 
 #include <Epetra_CrsMatrix.h>
-
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -77,9 +76,9 @@ namespace hyperelastic
                 for (unsigned int i = 1; i < dim; ++i)
                   ok = ok && cell->vertex_dof_index(v, i) == first + i;
                 c.node[v] = relevant.index_within_set(first);
-                c.row[v]  = owned.is_element(first) ?
-                              static_cast<int>(first - first_owned) :
-                              -1;
+                c.row[v]  = owned.is_element(first)
+                              ? static_cast<int>(first - first_owned)
+                              : -1;
               }
             c.owned        = cell->is_locally_owned();
             c.active_index = cell->active_cell_index();
@@ -95,8 +94,7 @@ namespace hyperelastic
 
   template <int dim>
   inline Tensor<2, dim>
-  P1Assembler<dim>::deformation_gradient(const Cell   &c,
-                                         const double *u) const
+  P1Assembler<dim>::deformation_gradient(const Cell &c, const double *u) const
   {
     Tensor<2, dim> F = unit_symmetric_tensor<dim>();
     for (unsigned int a = 0; a < n_nodes; ++a)
@@ -127,10 +125,7 @@ namespace hyperelastic
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->active_cell_index() == active_index)
           {
-            std::ostringstream s;
-            s << "cell " << active_index << " at (" << cell->center()
-              << "): " << error;
-            message = s.str();
+            message = cell_failure_text(active_index, cell->center(), error);
             break;
           }
     throw_convergence_failure_if_any(message, dof_handler.get_communicator());
@@ -143,11 +138,8 @@ namespace hyperelastic
   {
     const double *U = ghosted_values(u);
     internal        = 0.;
-    double *f       = internal.begin();
-    // Round-off magnitude, as in ElasticityOperator::assemble_forces.
-    const double modulus_scale = std::abs(material.parameters().mu) +
-                                 std::abs(material.parameters().lambda);
-    double       magnitude_squared = 0.;
+    double      *f  = internal.begin();
+    RoundOff     round_off(material);
     std::string  error;
     unsigned int bad_cell = 0;
     for (const Cell &c : cells)
@@ -176,20 +168,19 @@ namespace hyperelastic
             double gradient_sum = 0.;
             for (unsigned int a = 0; a < n_nodes; ++a)
               gradient_sum += dim * c.grad[a].norm();
-            const double magnitude = modulus_scale * (1. + F.norm_square()) *
-                                     gradient_sum * c.volume;
-            magnitude_squared += magnitude * magnitude;
+            round_off.add_force(F, gradient_sum, c.volume);
+            round_off.end_cell();
           }
       }
     report(error, bad_cell);
-    return magnitude_squared;
+    return round_off.force_noise(dof_handler.get_communicator());
   }
 
   template <int dim>
   bool
   P1Assembler<dim>::find_block_positions(const MatrixType &matrix) const
   {
-    const Epetra_CrsMatrix &E = matrix.trilinos_matrix();
+    const Epetra_CrsMatrix &E       = matrix.trilinos_matrix();
     int                    *offsets = nullptr, *indices = nullptr;
     double                 *values = nullptr;
     bool                    ok     = E.StorageOptimized() &&
@@ -210,9 +201,9 @@ namespace hyperelastic
     for (unsigned int r = 0; ok && r < n_owned; ++r)
       {
         const types::global_dof_index g = first_owned + r;
-        ok       = E.LRID(static_cast<TrilinosIndex>(g)) == static_cast<int>(r);
-        const int p = ok ? find(r, column_of(g)) : -1;
-        ok          = ok && p >= 0;
+        ok = E.LRID(static_cast<TrilinosIndex>(g)) == static_cast<int>(r);
+        const int p          = ok ? find(r, column_of(g)) : -1;
+        ok                   = ok && p >= 0;
         diagonal_position[r] = p;
       }
 
@@ -236,8 +227,7 @@ namespace hyperelastic
                        indices[offsets[r0 + i] + p + k] == column_of(g + k);
               block_position[ci][a * n_nodes + b] = p;
             }
-    return Utilities::MPI::min(ok ? 1 : 0, dof_handler.get_communicator()) ==
-           1;
+    return Utilities::MPI::min(ok ? 1 : 0, dof_handler.get_communicator()) == 1;
   }
 
   template <int dim>
@@ -296,7 +286,6 @@ namespace hyperelastic
   template <int dim>
   bool
   P1Assembler<dim>::system(const VectorType                &u,
-                           const VectorType                &external,
                            const AffineConstraints<double> &constraints,
                            const bool                       project_tangent,
                            MatrixType                      &matrix,
@@ -318,13 +307,13 @@ namespace hyperelastic
     for (const auto &line : constraints.get_lines())
       if (line.index >= first_owned && line.index < first_owned + n_owned)
         {
-          dirichlet_only = dirichlet_only && line.entries.empty();
+          dirichlet_only               = dirichlet_only && line.entries.empty();
           prescribed_owned(line.index) = line.inhomogeneity;
         }
     if (Utilities::MPI::min(block_ok && dirichlet_only ? 1 : 0,
                             dof_handler.get_communicator()) == 0)
       return false;
-    prescribed_ghosted      = prescribed_owned;
+    prescribed_ghosted       = prescribed_owned;
     const double *prescribed = ghosted_values(prescribed_ghosted);
 
     const double *U = ghosted_values(u);
@@ -338,9 +327,9 @@ namespace hyperelastic
 
     Tensor<2, dim>     P;
     StressTangent<dim> A;
-    ElementMatrix K;
-    std::string  error;
-    unsigned int bad_cell = 0;
+    ElementMatrix      K;
+    std::string        error;
+    unsigned int       bad_cell = 0;
     for (unsigned int ci = 0; ci < cells.size(); ++ci)
       {
         const Cell &c = cells[ci];
@@ -358,21 +347,9 @@ namespace hyperelastic
             bad_cell = c.active_index;
             break;
           }
-        // A sum is non-finite if any term is (checked before anything is
-        // written: Trilinos would carry NaN into the solver).
-        double sum = 0.;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int J = 0; J < dim; ++J)
-            {
-              sum += P[i][J];
-              for (unsigned int k = 0; k < dim; ++k)
-                for (unsigned int L = 0; L < dim; ++L)
-                  sum += A[i][J][k][L];
-            }
-        if (!std::isfinite(sum))
+        if (!stress_and_tangent_finite(P, A))
           {
-            error = "non-finite stress or tangent (the model may be undefined "
-                    "for this element's deformation, e.g. J <= 0)";
+            error    = non_finite_stress_message();
             bad_cell = c.active_index;
             break;
           }
@@ -430,19 +407,15 @@ namespace hyperelastic
       }
     report(error, bad_cell);
 
-    // Loads on the free rows; a constrained row reads d u_r = d g_r with a
-    // diagonal of the size of the others, as AffineConstraints would make it.
-    const double *f_ext = external.begin();
+    // A constrained row reads d u_r = d g_r with a diagonal of the size of
+    // the others, as AffineConstraints would make it.
     for (unsigned int r = 0; r < n_owned; ++r)
       {
         const double g = prescribed[owned_offset_in_ghosted + r];
-        if (std::isnan(g))
-          b[r] += f_ext[r];
-        else
+        if (!std::isnan(g))
           {
-            const double d = constrained_diagonal[r] > 0. ?
-                               constrained_diagonal[r] :
-                               1.;
+            const double d =
+              constrained_diagonal[r] > 0. ? constrained_diagonal[r] : 1.;
             values[offsets[r] + diagonal_position[r]] = d;
             b[r]                                      = d * g;
           }
@@ -452,21 +425,16 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
+  EnergyEvaluation
   P1Assembler<dim>::stored_energy(const VectorType &u,
-                                  const bool        with_energy,
-                                  double           &energy,
-                                  double           &magnitude,
-                                  double           &min_J) const
+                                  const bool        with_energy) const
   {
-    const double *U            = ghosted_values(u);
-    const double modulus_scale = std::abs(material.parameters().mu) +
-                                 std::abs(material.parameters().lambda);
-    energy    = 0.;
-    magnitude = 0.;
-    min_J     = std::numeric_limits<double>::infinity();
-    std::string  error;
-    unsigned int bad_cell = 0;
+    const double *U      = ghosted_values(u);
+    double        energy = 0.;
+    double        min_J  = std::numeric_limits<double>::infinity();
+    RoundOff      round_off(material);
+    std::string   error;
+    unsigned int  bad_cell = 0;
     for (const Cell &c : cells)
       if (c.owned)
         {
@@ -486,24 +454,18 @@ namespace hyperelastic
               break;
             }
           energy += psi * c.volume;
-          magnitude +=
-            (std::abs(psi) + modulus_scale * (1. + F.norm_square())) *
-            c.volume;
+          round_off.add_energy(psi, F, c.volume);
         }
     report(error, bad_cell);
-  }
-
-  template <int dim>
-  double
-  P1Assembler<dim>::local_dot(const VectorType &u_ghosted,
-                              const VectorType &v) const
-  {
-    const double *U   = ghosted_values(u_ghosted) + owned_offset_in_ghosted;
-    const double *w   = v.begin();
-    double        sum = 0.;
-    for (unsigned int r = 0; r < n_owned; ++r)
-      sum += U[r] * w[r];
-    return sum;
+    const MPI_Comm   comm = dof_handler.get_communicator();
+    EnergyEvaluation result;
+    result.min_J = Utilities::MPI::min(min_J, comm);
+    if (with_energy)
+      {
+        result.energy = Utilities::MPI::sum(energy, comm);
+        result.noise  = round_off.energy_noise(comm);
+      }
+    return result;
   }
 
   template class P1Assembler<2>;

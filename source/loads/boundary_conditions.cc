@@ -3,8 +3,8 @@
 #include <deal.II/base/numbers.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/loads/boundary_conditions.h>
 
 #include <cmath>
 #include <iostream>
@@ -24,7 +24,7 @@ namespace hyperelastic
     all_constants.emplace("pi", numbers::PI);
     const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
 
-    auto        function = std::make_unique<FunctionParser<dim>>(dim);
+    auto function = std::make_unique<FunctionParser<dim>>(expressions.size());
     std::string joined;
     for (const auto &x : expressions)
       joined += (joined.empty() ? "" : "; ") + x;
@@ -116,6 +116,16 @@ namespace hyperelastic
            parse_vector_function<dim>(c.expressions,
                                       loading.constants,
                                       c.subsection + "/Traction"),
+           c.subsection});
+      }
+    for (const auto &c : loading.pressures)
+      {
+        check_id(c.boundary_id, c.subsection);
+        pressures.push_back(
+          {c.boundary_id,
+           parse_vector_function<dim>({c.expression},
+                                      loading.constants,
+                                      c.subsection + "/Pressure"),
            c.subsection});
       }
     if (!loading.body_force.empty())

@@ -1,4 +1,5 @@
-// The scene's Loading subsection and its Dirichlet and Traction subsections.: declaration, documentation and validation of its entries.
+// The scene's Loading subsection and its Dirichlet, Traction and Pressure
+// subsections: declaration, documentation and validation of their entries.
 #include <deal.II/base/utilities.h>
 
 #include <hyperelastic/base/error_handling.h>
@@ -10,13 +11,7 @@
 
 namespace hyperelastic
 {
-  using dealii::Patterns::Anything;
-  using dealii::Patterns::Bool;
-  using dealii::Patterns::Double;
-  using dealii::Patterns::Integer;
-  using dealii::Patterns::List;
-  using dealii::Patterns::MultipleSelection;
-  using dealii::Patterns::Selection;
+  using namespace entry_patterns;
 
   void
   LoadingParameters::declare(ParameterHandler &prm)
@@ -78,6 +73,27 @@ namespace hyperelastic
                           "Force per unit reference area (a nominal, "
                           "dead-load traction): dim expressions of x, y, (z,) "
                           "t separated by ';'.");
+        prm.leave_subsection();
+      }
+    for (unsigned int i = 1; i <= max_pressures; ++i)
+      {
+        prm.enter_subsection("Pressure " + std::to_string(i));
+        prm.declare_entry("Boundary id",
+                          "-1",
+                          Integer(-1),
+                          "Boundary id loaded by this pressure; -1 leaves this "
+                          "slot unused.");
+        prm.declare_entry(
+          "Pressure",
+          "0",
+          Anything(),
+          "Pressure p (force per unit deformed area, positive pushes into the "
+          "body): one expression of the reference position x, y, (z,) and t. "
+          "A follower load: it acts along the deformed normal on the "
+          "deformed area, p J F^-T N dA, and adds a load stiffness to the "
+          "tangent (non-symmetric unless the loaded surface is closed and p "
+          "uniform, when the load has the potential p times the enclosed "
+          "volume).");
         prm.leave_subsection();
       }
   }
@@ -174,6 +190,17 @@ namespace hyperelastic
             c.expressions = split_expressions(prm.get("Traction"));
             tractions.push_back(c);
           }
+        prm.leave_subsection();
+      }
+    for (unsigned int i = 1; i <= max_pressures; ++i)
+      {
+        const std::string section = "Pressure " + std::to_string(i);
+        prm.enter_subsection(section);
+        const int id = prm.get_integer("Boundary id");
+        if (id >= 0)
+          pressures.push_back({static_cast<dealii::types::boundary_id>(id),
+                               prm.get("Pressure"),
+                               section});
         prm.leave_subsection();
       }
   }

@@ -1,4 +1,5 @@
-// The scene's Material subsection: declaration, documentation and validation of its entries.
+// The scene's Material subsection: declaration, documentation and validation of
+// its entries.
 #include <deal.II/base/utilities.h>
 
 #include <hyperelastic/base/error_handling.h>
@@ -10,13 +11,26 @@
 
 namespace hyperelastic
 {
-  using dealii::Patterns::Anything;
-  using dealii::Patterns::Bool;
-  using dealii::Patterns::Double;
-  using dealii::Patterns::Integer;
-  using dealii::Patterns::List;
-  using dealii::Patterns::MultipleSelection;
-  using dealii::Patterns::Selection;
+  using namespace entry_patterns;
+
+  namespace
+  {
+    /// Material/Model's documentation: one paragraph per registered model.
+    std::string
+    model_documentation()
+    {
+      std::string text =
+        "Constitutive model, one of the registered models below. The "
+        "Lame-based ones take the shared elastic constants of this "
+        "subsection ('Elastic constants' and the moduli it selects); a model "
+        "with constants of its own reads them from the subsection "
+        "Material/<model name> and ignores the shared ones. See README, "
+        "'Choosing a model'.";
+      for (const MaterialModel &m : material_models())
+        text += "\n'" + m.name + "': " + m.documentation;
+      return text;
+    }
+  } // namespace
 
   void
   MaterialParameters::declare(ParameterHandler &prm)
@@ -25,17 +39,7 @@ namespace hyperelastic
     prm.declare_entry("Model",
                       "neo-Hookean",
                       Selection(material_model_names()),
-                      "Constitutive model: 'linear elastic' (small strain), "
-                      "'St. Venant-Kirchhoff', 'corotational' (ARAP when "
-                      "lambda = 0), 'neo-Hookean' (log barrier: undefined "
-                      "for inverted elements), 'stable neo-Hookean' (Smith, "
-                      "de Goes, Kim 2018; finite for inverted elements; the "
-                      "same small-strain E and nu) or 'decoupled neo-Hookean' "
-                      "(psi = kappa/4 (J^2 - 1 - 2 ln J) + mu/2 (J^(-2/3) I1 "
-                      "- 3), the model of the finite-strain literature, e.g. "
-                      "Cook's membrane; bulk modulus kappa = lambda + 2 mu / "
-                      "3; undefined for inverted elements). See "
-                      "doc/manual.md, 'Choosing a model'.");
+                      model_documentation());
     prm.declare_entry("Elastic constants",
                       "Young's modulus and Poisson's ratio",
                       Selection("Young's modulus and Poisson's ratio|Lame|"
@@ -43,7 +47,7 @@ namespace hyperelastic
                       "Which pair of constants the scene gives: (E, nu), "
                       "the Lame constants (mu, lambda), or the shear and "
                       "bulk moduli (mu, kappa), converted to lambda = kappa "
-                      "- 2 mu / 3.");
+                      "- 2 mu / 3. Used by the Lame-based models only.");
     prm.declare_entry(
       "Young's modulus",
       "1",
@@ -69,6 +73,14 @@ namespace hyperelastic
                       Double(),
                       "kappa > 0 (used with 'shear and bulk modulus'; "
                       "lambda = kappa - 2 mu / 3).");
+    // The models with constants of their own: one subsection each.
+    for (const MaterialModel &m : material_models())
+      if (m.declare_entries)
+        {
+          prm.enter_subsection(m.name);
+          m.declare_entries(prm);
+          prm.leave_subsection();
+        }
     prm.leave_subsection();
   }
 
@@ -76,7 +88,19 @@ namespace hyperelastic
   MaterialParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    model                       = prm.get("Model");
+    model                           = prm.get("Model");
+    const MaterialModel &registered = material_model(model);
+    elastic_constants               = LameParameters();
+    if (registered.uses_elastic_constants)
+      parse_elastic_constants(prm, elastic_constants);
+    factory = registered.parse(prm, elastic_constants);
+    prm.leave_subsection();
+  }
+
+  void
+  MaterialParameters::parse_elastic_constants(ParameterHandler &prm,
+                                              LameParameters   &lame)
+  {
     const std::string constants = prm.get("Elastic constants");
     if (constants == "shear and bulk modulus")
       {
@@ -124,6 +148,5 @@ namespace hyperelastic
                  "must lie strictly between -1 and 0.5");
         lame = LameParameters::from_young_poisson(E, nu);
       }
-    prm.leave_subsection();
   }
 } // namespace hyperelastic

@@ -10,13 +10,7 @@
 
 namespace hyperelastic
 {
-  using dealii::Patterns::Anything;
-  using dealii::Patterns::Bool;
-  using dealii::Patterns::Double;
-  using dealii::Patterns::Integer;
-  using dealii::Patterns::List;
-  using dealii::Patterns::MultipleSelection;
-  using dealii::Patterns::Selection;
+  using namespace entry_patterns;
 
   void
   MeshParameters::declare(ParameterHandler &prm)

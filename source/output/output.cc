@@ -128,7 +128,8 @@ namespace hyperelastic
             csv << ",reaction_" << id << '_' << axes[d];
         for (unsigned int d = 0; d < dim; ++d)
           csv << ",deformed_min_" << axes[d] << ",deformed_max_" << axes[d];
-        csv << ",load_increment,cut_backs,line_search_backtracks";
+        csv << ",load_increment,cut_backs,line_search_backtracks,"
+               "inverted_cells";
         for (unsigned int k = 0; k < s.point_displacements.size(); ++k)
           for (unsigned int d = 0; d < dim; ++d)
             csv << ",point" << k + 1 << "_u" << axes[d];
@@ -142,7 +143,8 @@ namespace hyperelastic
         csv << ',' << force[d];
     for (unsigned int d = 0; d < dim; ++d)
       csv << ',' << s.deformed_min[d] << ',' << s.deformed_max[d];
-    csv << ',' << s.load_increment << ',' << s.cut_backs << ',' << s.backtracks;
+    csv << ',' << s.load_increment << ',' << s.cut_backs << ',' << s.backtracks
+        << ',' << s.inverted_cells;
     for (const auto &displacement : s.point_displacements)
       for (unsigned int d = 0; d < dim; ++d)
         csv << ',' << displacement[d];

@@ -1,4 +1,5 @@
-// The scene's Output subsection: declaration, documentation and validation of its entries.
+// The scene's Output subsection: declaration, documentation and validation of
+// its entries.
 #include <deal.II/base/utilities.h>
 
 #include <hyperelastic/base/error_handling.h>
@@ -10,13 +11,7 @@
 
 namespace hyperelastic
 {
-  using dealii::Patterns::Anything;
-  using dealii::Patterns::Bool;
-  using dealii::Patterns::Double;
-  using dealii::Patterns::Integer;
-  using dealii::Patterns::List;
-  using dealii::Patterns::MultipleSelection;
-  using dealii::Patterns::Selection;
+  using namespace entry_patterns;
 
   void
   OutputParameters::declare(ParameterHandler &prm)
@@ -85,8 +80,8 @@ namespace hyperelastic
         if (!ok || coordinates.size() < 2 || coordinates.size() > 3)
           reject("Output/Points",
                  points_text,
-                 "expected points 'x, y[, z]' separated by ';', got '" +
-                   point + "'");
+                 "expected points 'x, y[, z]' separated by ';', got '" + point +
+                   "'");
         points.push_back(coordinates);
       }
     prm.leave_subsection();

@@ -1,7 +1,9 @@
-// CG + ML AMG and direct solves; ML is configured through a Teuchos list
-// because deal.II 9.4 cannot pass rotational modes through AdditionalData.
+// CG (or GMRES for a non-symmetric tangent) + ML AMG and direct solves; ML is
+// configured through a Teuchos list because deal.II 9.4 cannot pass rotational
+// modes through AdditionalData.
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <hyperelastic/base/error_handling.h>
@@ -63,6 +65,15 @@ namespace hyperelastic
       build_amg(A);
   }
 
+  std::string
+  LinearSolver::description() const
+  {
+    if (parameters.type == LinearSolverType::direct)
+      return parameters.direct_solver + " (direct)";
+    return krylov_name() + " with ML AMG (rigid-body near-null space)" +
+           (symmetric ? "" : "; the tangent is not symmetric");
+  }
+
   void
   LinearSolver::build_amg(const TrilinosWrappers::SparseMatrix &A)
   {
@@ -121,37 +132,39 @@ namespace hyperelastic
         return 0;
       }
 
-    const bool   fresh      = baseline_rate < 0.;
+    const bool fresh = baseline_rate < 0.;
     // Iterations per decade of residual reduction, so that solves to
     // different (inexact Newton) tolerances compare.
-    const double decades    = std::max(1., -std::log10(relative_tolerance));
-    const double rate_limit = std::max(
-      parameters.amg_rebuild_growth * baseline_rate, baseline_rate + 5. / decades);
+    const double decades = std::max(1., -std::log10(relative_tolerance));
+    const double rate_limit =
+      std::max(parameters.amg_rebuild_growth * baseline_rate,
+               baseline_rate + 5. / decades);
     // An old hierarchy gets a few times the iterations that would ask for
     // a rebuild: if it has stopped working (its smoother tuned to another
     // tangent can even make CG diverge), waiting for the iteration limit
     // would cost more than the rebuild.
     const unsigned int limit =
-      fresh ? parameters.max_iterations :
-              std::min<unsigned int>(parameters.max_iterations,
+      fresh ? parameters.max_iterations
+            : std::min<unsigned int>(parameters.max_iterations,
                                      std::ceil(3. * rate_limit * decades));
-    SolverControl control = run_cg(A, x, b, relative_tolerance, limit);
+    SolverControl control    = run_cg(A, x, b, relative_tolerance, limit);
     unsigned int  iterations = control.last_step();
     if (control.last_check() != SolverControl::success && !fresh)
       {
         // Rebuild for this tangent and try once more (the same decision on
         // every rank: CG's counts are global).
         build_amg(A);
-        x       = 0.;
-        control = run_cg(A, x, b, relative_tolerance, parameters.max_iterations);
+        x = 0.;
+        control =
+          run_cg(A, x, b, relative_tolerance, parameters.max_iterations);
         iterations += control.last_step();
         baseline_rate = control.last_step() / decades;
       }
     if (control.last_check() != SolverControl::success)
       {
         std::ostringstream message;
-        message << std::scientific << std::setprecision(3)
-                << "CG with AMG did not converge: residual "
+        message << std::scientific << std::setprecision(3) << krylov_name()
+                << " with AMG did not converge: residual "
                 << control.last_value() << " after " << control.last_step()
                 << " iterations (target " << control.tolerance()
                 << "); raise 'Linear solver/Max iterations' or use Type = "
@@ -174,10 +187,19 @@ namespace hyperelastic
                        const unsigned int max_iterations) const
   {
     SolverControl control(max_iterations, tolerance * b.l2_norm());
-    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
     try
       {
-        cg.solve(A, x, b, amg);
+        if (symmetric)
+          SolverCG<TrilinosWrappers::MPI::Vector>(control).solve(A, x, b, amg);
+        else
+          {
+            // Restarted GMRES; right preconditioning, so that the residual it
+            // tests is the true one, as for CG.
+            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData data(
+              50, true);
+            SolverGMRES<TrilinosWrappers::MPI::Vector>(control, data)
+              .solve(A, x, b, amg);
+          }
       }
     catch (const SolverControl::NoConvergence &)
       {

@@ -10,13 +10,7 @@
 
 namespace hyperelastic
 {
-  using dealii::Patterns::Anything;
-  using dealii::Patterns::Bool;
-  using dealii::Patterns::Double;
-  using dealii::Patterns::Integer;
-  using dealii::Patterns::List;
-  using dealii::Patterns::MultipleSelection;
-  using dealii::Patterns::Selection;
+  using namespace entry_patterns;
 
   void
   LoadSteppingParameters::declare(ParameterHandler &prm)
@@ -27,7 +21,8 @@ namespace hyperelastic
                       Bool(),
                       "When Newton fails in a load step (iteration limit, "
                       "line-search failure, linear-solver failure, NaN, "
-                      "inverted elements at convergence), return to the last "
+                      "inverted elements at convergence that 'Newton/Inverted "
+                      "elements at equilibrium' rejects), return to the last "
                       "converged state and retry with half the load "
                       "increment; after two easy steps in a row double it "
                       "again, up to 1 / 'Loading/Number of load steps'. "

@@ -10,13 +10,7 @@
 
 namespace hyperelastic
 {
-  using dealii::Patterns::Anything;
-  using dealii::Patterns::Bool;
-  using dealii::Patterns::Double;
-  using dealii::Patterns::Integer;
-  using dealii::Patterns::List;
-  using dealii::Patterns::MultipleSelection;
-  using dealii::Patterns::Selection;
+  using namespace entry_patterns;
 
   void
   NewtonParameters::declare(ParameterHandler &prm)
@@ -95,6 +89,23 @@ namespace hyperelastic
                       Double(0, 1),
                       "Loosest relative Krylov tolerance of inexact Newton "
                       "(used in the first two iterations of a load step).");
+    prm.declare_entry(
+      "Inverted elements at equilibrium",
+      "automatic",
+      Selection("automatic|reject|warn"),
+      "What happens when Newton converges to a state in which some cell has "
+      "J <= 0 at a quadrature point. 'warn': the state is accepted; one line "
+      "gives the number of inverted cells, the smallest J and where it is, "
+      "and the CSV column inverted_cells counts them. For the models defined "
+      "at J <= 0 (stable neo-Hookean, corotational, St. Venant-Kirchhoff, "
+      "linear elastic) such an equilibrium can be the correct discrete "
+      "answer, for example near a clamped edge of a crushed body. 'reject': "
+      "the attempt fails like a Newton failure (the load step is cut back, "
+      "see 'Load stepping/Adaptive'). 'automatic': 'warn' for the models "
+      "defined at J <= 0, 'reject' for those whose energy is infinite there "
+      "(neo-Hookean, decoupled neo-Hookean: with the line search on, their "
+      "iterates never reach J <= 0). 'warn' with such a model is an input "
+      "error.");
     prm.leave_subsection();
   }
 
@@ -120,6 +131,10 @@ namespace hyperelastic
               : tangent_name == "projected"
                 ? NewtonTangent::projected
                 : NewtonTangent::exact_then_projected;
+    const std::string inverted = prm.get("Inverted elements at equilibrium");
+    inverted_elements          = inverted == "reject" ? InvertedElements::reject
+                                 : inverted == "warn" ? InvertedElements::warn
+                                                      : InvertedElements::automatic;
     if (!(minimum_step_length > 0.))
       reject("Newton/Minimum step length",
              prm.get("Minimum step length"),

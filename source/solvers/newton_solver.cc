@@ -1,5 +1,6 @@
 // Newton iteration with a backtracking line search on the total potential
-// energy, residual and update tests, and a printed table.
+// energy (or the residual norm), residual and update tests, and a printed
+// table.
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/solvers/newton_solver.h>
 
@@ -39,8 +40,16 @@ namespace hyperelastic
 
   namespace
   {
-    const std::string header = "   iteration      residual        update"
-                               "      step        energy     min J  lin.its";
+    /// The table's header; its merit column is the energy, or the residual
+    /// norm of the accepted trial when the line search tests that.
+    std::string
+    header(const bool residual_merit)
+    {
+      return std::string("   iteration      residual        update"
+                         "      step") +
+             (residual_merit ? "   merit |res|" : "        energy") +
+             "     min J  lin.its";
+    }
 
     std::string
     format_row(const NewtonIteration &row)
@@ -55,6 +64,8 @@ namespace hyperelastic
       s << std::setprecision(6) << std::setw(14);
       if (std::isfinite(row.energy))
         s << row.energy;
+      else if (std::isfinite(row.trial_residual))
+        s << row.trial_residual;
       else
         s << "";
       s << std::defaultfloat << std::setprecision(3) << std::setw(10);
@@ -71,7 +82,7 @@ namespace hyperelastic
   std::string
   NewtonSolver::table(const NewtonResult &result)
   {
-    std::string text = header;
+    std::string text = header(result.residual_merit);
     for (const auto &row : result.history)
       text += "\n" + format_row(row);
     return text;
@@ -107,15 +118,18 @@ namespace hyperelastic
 
   bool
   NewtonSolver::line_search(NonlinearSystem  &system,
-                            const bool        test_energy,
+                            const bool        test_merit,
                             const TrialPoint &current,
                             NewtonIteration  &row,
                             std::string      &failure) const
   {
-    using Check       = NonlinearSystem::TrialCheck;
-    const Check check = !parameters.line_search ? Check::none
-                        : test_energy           ? Check::energy
-                                                : Check::admissibility;
+    using Check               = NonlinearSystem::TrialCheck;
+    const bool  test_residual = test_merit && !system.has_potential();
+    const bool  test_energy   = test_merit && !test_residual;
+    const Check check         = !parameters.line_search ? Check::none
+                                : test_energy           ? Check::energy
+                                : test_residual         ? Check::residual
+                                                        : Check::admissibility;
     // Sufficient decrease E(alpha) <= E(0) + c alpha dE/dalpha(0).
     const double slope = test_energy ? system.directional_derivative() : 0.;
     if (test_energy && !(slope < 0.))
@@ -138,14 +152,21 @@ namespace hyperelastic
           ok = trial.energy <= current.energy +
                                  parameters.armijo_constant * alpha * slope +
                                  current.energy_noise + trial.energy_noise;
+        if (ok && test_residual)
+          // Without a potential: sufficient decrease of the residual norm,
+          // which the Newton direction gives for small enough steps.
+          ok = trial.residual <=
+               (1. - parameters.armijo_constant * alpha) * current.residual +
+                 current.residual_noise + trial.residual_noise;
         if (ok)
           {
-            row.step_length   = alpha;
-            row.energy_tested = test_energy;
-            row.energy_before = current.energy;
-            row.energy        = trial.energy;
-            row.energy_noise  = trial.energy_noise;
-            row.min_J         = trial.min_J;
+            row.step_length    = alpha;
+            row.energy_tested  = test_energy;
+            row.energy_before  = current.energy;
+            row.energy         = trial.energy;
+            row.energy_noise   = trial.energy_noise;
+            row.min_J          = trial.min_J;
+            row.trial_residual = trial.residual;
             return true;
           }
         ++row.backtracks;
@@ -156,7 +177,9 @@ namespace hyperelastic
                    << parameters.minimum_step_length
                    << " (Newton/Minimum step length) gives "
                    << (trial.admissible
-                         ? "enough decrease of the energy"
+                         ? (test_residual
+                              ? "enough decrease of the residual norm"
+                              : "enough decrease of the energy")
                          : "an admissible state (elements would invert or the "
                            "energy is not finite)");
             failure = reason.str();
@@ -169,8 +192,15 @@ namespace hyperelastic
   NewtonSolver::solve(NonlinearSystem &system) const
   {
     NewtonResult result;
+    result.residual_merit = parameters.line_search && !system.has_potential();
     if (verbose)
-      pcout << header << std::endl;
+      {
+        if (result.residual_merit)
+          pcout << "   (line search on the residual norm: a load has no "
+                   "potential)"
+                << std::endl;
+        pcout << header(result.residual_merit) << std::endl;
+      }
 
     // True until a full step has moved the constrained unknowns to their
     // prescribed values. Until then the energy cannot be compared between
@@ -189,9 +219,9 @@ namespace hyperelastic
         unsigned int linear_its = 0;
         // The iteration that imposes the prescribed-displacement increment
         // is the load step's predictor: solved fully.
-        row.forcing = (system.is_linear() || moving_constraints) ?
-                        0. :
-                        forcing_term(result.history, target);
+        row.forcing = (system.is_linear() || moving_constraints)
+                        ? 0.
+                        : forcing_term(result.history, target);
         for (;;)
           {
             std::string failure;
@@ -202,13 +232,19 @@ namespace hyperelastic
                                                 row.projected);
                 linear_its += system.solve_linearization(row.forcing);
 
-                const bool test_energy =
+                const bool test_merit =
                   parameters.line_search && !moving_constraints;
-                if (test_energy && !std::isfinite(current.energy))
+                // The merit of the current iterate, where not known yet.
+                if (test_merit && system.has_potential() &&
+                    !std::isfinite(current.energy))
                   current =
                     system.evaluate_trial(0.,
                                           NonlinearSystem::TrialCheck::energy);
-                if (line_search(system, test_energy, current, row, failure))
+                if (test_merit && !system.has_potential() &&
+                    !std::isfinite(current.residual))
+                  current = system.evaluate_trial(
+                    0., NonlinearSystem::TrialCheck::residual);
+                if (line_search(system, test_merit, current, row, failure))
                   break;
               }
             catch (const ConvergenceFailure &e)
@@ -235,6 +271,8 @@ namespace hyperelastic
 
         const ResidualNorms norms = system.residual_norms();
         row.residual              = norms.residual;
+        current.residual          = norms.residual;
+        current.residual_noise    = norms.noise;
         result.history.push_back(row);
         if (verbose)
           pcout << format_row(row) << std::endl;
@@ -259,8 +297,8 @@ namespace hyperelastic
         // A linear problem is solved by its first full step (to the linear
         // solver's tolerance): a second solve would only polish round-off.
         const bool linear_done = system.is_linear() && row.step_length == 1.;
-        if (!moving_constraints && ((residual_small && update_small) ||
-                                    linear_done))
+        if (!moving_constraints &&
+            ((residual_small && update_small) || linear_done))
           {
             system.verify_converged_state();
             return result;

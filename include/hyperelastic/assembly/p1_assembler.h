@@ -19,11 +19,8 @@
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 
-#include <hyperelastic/materials/material.h>
+#include <hyperelastic/assembly/assembler.h>
 
 #include <array>
 #include <vector>
@@ -33,12 +30,9 @@ class Epetra_CrsMatrix;
 namespace hyperelastic
 {
   template <int dim>
-  class P1Assembler
+  class P1Assembler : public Assembler<dim>
   {
   public:
-    using VectorType = dealii::TrilinosWrappers::MPI::Vector;
-    using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
-
     static constexpr unsigned int n_nodes = dim + 1;
 
     /// Precomputes the geometry of the locally owned and ghost cells. The
@@ -55,37 +49,21 @@ namespace hyperelastic
       return layout_ok;
     }
 
-    /// Internal forces f_int(u) on the owned rows (u with ghost entries).
-    /// Returns the sum over owned cells of the squared round-off magnitude
-    /// of the cell forces (see ElasticityOperator::assemble_forces); not
-    /// summed over ranks. Collective only through exceptions.
     double
-    internal_forces(const VectorType &u, VectorType &internal) const;
+    internal_forces(const VectorType &u, VectorType &internal) const override;
 
-    /// Tangent and right-hand side external - f_int(u), with the Dirichlet
-    /// constraints (no other kind) eliminated. Returns false, having written
-    /// nothing, if @p matrix lacks the node-block sparsity this needs (built
-    /// without constraints), on any rank. Collective.
+    /// Declines (returns false on all ranks) constraints other than
+    /// Dirichlet ones and a matrix without the node-block sparsity it needs
+    /// (one built without constraints).
     bool
     system(const VectorType                        &u,
-           const VectorType                        &external,
            const dealii::AffineConstraints<double> &constraints,
            bool                                     project_tangent,
            MatrixType                              &matrix,
-           VectorType                              &rhs) const;
+           VectorType                              &rhs) const override;
 
-    /// Stored energy of the owned cells, the summed magnitude of its terms
-    /// (for its round-off) and the smallest J; not summed over ranks.
-    void
-    stored_energy(const VectorType &u,
-                  bool              with_energy,
-                  double           &energy,
-                  double           &magnitude,
-                  double           &min_J) const;
-
-    /// u . v over the owned entries, u with ghost entries (not summed).
-    double
-    local_dot(const VectorType &u_ghosted, const VectorType &v) const;
+    EnergyEvaluation
+    stored_energy(const VectorType &u, bool with_energy) const override;
 
   private:
     struct Cell
@@ -131,14 +109,14 @@ namespace hyperelastic
     void
     report(const std::string &error, unsigned int cell) const;
 
-    const dealii::DoFHandler<dim> &dof_handler;
-    const Material<dim>           &material;
-    dealii::IndexSet               relevant;
-    std::vector<Cell>              cells;
-    bool                           layout_ok = false;
+    const dealii::DoFHandler<dim>  &dof_handler;
+    const Material<dim>            &material;
+    dealii::IndexSet                relevant;
+    std::vector<Cell>               cells;
+    bool                            layout_ok   = false;
     dealii::types::global_dof_index first_owned = 0;
-    unsigned int                   n_owned   = 0;
-    unsigned int                   n_ghosted = 0;
+    unsigned int                    n_owned     = 0;
+    unsigned int                    n_ghosted   = 0;
     /// Offset of the owned entries inside a ghosted vector's local array.
     unsigned int owned_offset_in_ghosted = 0;
 
@@ -146,7 +124,7 @@ namespace hyperelastic
     /// relative to the start of the row (for rows this rank owns); valid
     /// for the matrix whose Epetra object is block_matrix.
     mutable std::vector<std::array<unsigned int, n_nodes * n_nodes>>
-                                   block_position;
+                                    block_position;
     mutable const Epetra_CrsMatrix *block_matrix = nullptr;
     mutable bool                    block_ok     = false;
     /// Position of the diagonal entry of each owned row.

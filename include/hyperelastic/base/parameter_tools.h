@@ -9,6 +9,20 @@
 
 namespace hyperelastic
 {
+  /// The entry patterns the subsections' declare() functions use; a
+  /// parameter file says `using namespace entry_patterns;`.
+  namespace entry_patterns
+  {
+    using dealii::Patterns::Anything;
+    using dealii::Patterns::Bool;
+    using dealii::Patterns::Double;
+    using dealii::Patterns::FileName;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::List;
+    using dealii::Patterns::MultipleSelection;
+    using dealii::Patterns::Selection;
+  } // namespace entry_patterns
+
   /// Throws InputError "scene entry 'entry' = 'value': why".
   [[noreturn]] void
   reject(const std::string &entry, const std::string &value, const std::string &why);

@@ -1,6 +1,8 @@
 // Loads and supports of a scene as functions of (x, y, z, t): prescribed
 // displacements (Dirichlet, with a component mask), dead-load tractions per
-// unit reference area and body forces per unit reference volume.
+// unit reference area, body forces per unit reference volume and follower
+// pressures per unit deformed area. The forces they exert are LoadTerms
+// (loads/load_term.h).
 #pragma once
 
 #include <deal.II/base/function.h>
@@ -39,10 +41,19 @@ namespace hyperelastic
   };
 
   template <int dim>
+  struct PressureBoundary
+  {
+    boundary_id                            id;
+    std::unique_ptr<dealii::Function<dim>> pressure; ///< one component
+    std::string                            subsection;
+  };
+
+  template <int dim>
   struct BoundaryConditions
   {
     std::vector<DirichletBoundary<dim>>    dirichlet;
     std::vector<TractionBoundary<dim>>     tractions;
+    std::vector<PressureBoundary<dim>>     pressures;
     std::unique_ptr<dealii::Function<dim>> body_force; ///< null: none
 
     /// Parses every expression and checks that each named boundary id exists
@@ -64,7 +75,7 @@ namespace hyperelastic
       dealii::AffineConstraints<double>           &constraints) const;
   };
 
-  /// A vector-valued function of (x, y, (z,) t) from dim expressions.
+  /// A function of (x, y, (z,) t) with one component per expression.
   /// Throws InputError naming @p entry if an expression does not parse.
   template <int dim>
   std::unique_ptr<dealii::Function<dim>>

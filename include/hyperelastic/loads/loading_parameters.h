@@ -31,6 +31,15 @@ namespace hyperelastic
     std::string                subsection;
   };
 
+  /// A follower pressure (force per unit deformed area along the deformed
+  /// normal) on one boundary id.
+  struct PressureCondition
+  {
+    dealii::types::boundary_id boundary_id = 0;
+    std::string                expression; ///< p(x, y, (z,) t)
+    std::string                subsection;
+  };
+
   struct LoadingParameters
   {
     unsigned int                    n_load_steps = 10;
@@ -38,9 +47,11 @@ namespace hyperelastic
     std::map<std::string, double>   constants;
     std::vector<DirichletCondition> dirichlet;
     std::vector<TractionCondition>  tractions;
+    std::vector<PressureCondition>  pressures;
 
     static constexpr unsigned int max_dirichlet = 8;
     static constexpr unsigned int max_tractions = 4;
+    static constexpr unsigned int max_pressures = 4;
 
     static void
     declare(ParameterHandler &prm);

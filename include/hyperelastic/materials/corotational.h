@@ -13,15 +13,25 @@
 namespace hyperelastic
 {
   template <int dim>
-  class Corotational : public Material<dim>
+  class Corotational : public LameBasedMaterial<dim, Corotational>
   {
   public:
-    using Material<dim>::Material;
+    using LameBasedMaterial<dim, Corotational>::LameBasedMaterial;
 
     std::string
     name() const override
     {
       return "corotational";
+    }
+
+    /// One paragraph for the scene documentation (material_registry.h).
+    static const char *
+    documentation()
+    {
+      return "psi = mu |F - R|^2 + lambda/2 (tr(S - I))^2 with the "
+             "rotation-variant polar decomposition F = R S (ARAP when lambda = "
+             "0). Finite for inverted elements (the reflection lives in S). "
+             "Constants: the shared elastic constants.";
     }
 
     double

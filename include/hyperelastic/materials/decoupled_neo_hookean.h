@@ -39,7 +39,7 @@
 namespace hyperelastic
 {
   template <int dim>
-  class DecoupledNeoHookean : public Material<dim>
+  class DecoupledNeoHookean : public LameBasedMaterial<dim, DecoupledNeoHookean>
   {
   public:
     using Material<dim>::not_a_number_tensor;
@@ -47,7 +47,7 @@ namespace hyperelastic
     /// @p lame are the scene's constants; the bulk modulus kappa = lambda +
     /// 2 mu / 3 is derived from them.
     explicit DecoupledNeoHookean(const LameParameters &lame)
-        : Material<dim>(lame)
+        : LameBasedMaterial<dim, DecoupledNeoHookean>(lame)
         , kappa(lame.lambda + 2. / 3. * lame.mu)
     {
     }
@@ -56,6 +56,17 @@ namespace hyperelastic
     name() const override
     {
       return "decoupled neo-Hookean";
+    }
+
+    /// One paragraph for the scene documentation (material_registry.h).
+    static const char *
+    documentation()
+    {
+      return "Decoupled neo-Hookean, psi = kappa/4 (J^2 - 1 - 2 ln J) + mu/2 "
+             "(J^(-2/3) I1 - 3), the model of the finite-strain literature "
+             "(e.g. Cook's membrane), with bulk modulus kappa = lambda + 2 mu "
+             "/ 3 from the shared elastic constants. Undefined for inverted "
+             "elements (J <= 0).";
     }
 
     double

@@ -10,15 +10,26 @@
 namespace hyperelastic
 {
   template <int dim>
-  class LinearElastic : public Material<dim>
+  class LinearElastic : public LameBasedMaterial<dim, LinearElastic>
   {
   public:
-    using Material<dim>::Material;
+    using LameBasedMaterial<dim, LinearElastic>::LameBasedMaterial;
 
     std::string
     name() const override
     {
       return "linear elastic";
+    }
+
+    /// One paragraph for the scene documentation (material_registry.h).
+    static const char *
+    documentation()
+    {
+      return "Small-strain linear elasticity, psi = mu eps:eps + lambda/2 (tr "
+             "eps)^2 with eps = sym(F - I): P is linear in F, so one linear "
+             "solve is the whole answer. Not rotation invariant: a rigid "
+             "rotation produces stress. Constants: the shared elastic "
+             "constants.";
     }
 
     double

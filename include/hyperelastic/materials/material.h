@@ -1,7 +1,10 @@
 // The constitutive interface: a hyperelastic material is a pure function of the
 // deformation gradient F giving the energy density psi(F) per unit reference
 // volume, the first Piola-Kirchhoff stress P = dpsi/dF and its derivative
-// dP/dF. Nothing here knows about meshes, quadrature or MPI.
+// dP/dF. Each model holds its own constants; the base class only knows the
+// small-strain moduli every model reduces to at F = I. Nothing here knows
+// about meshes, quadrature or MPI. Which models exist, and how a scene names
+// and parametrises them, is material_registry.h.
 #pragma once
 
 #include <deal.II/base/tensor.h>
@@ -39,10 +42,6 @@ namespace hyperelastic
   class Material
   {
   public:
-    explicit Material(const LameParameters &lame)
-        : lame(lame)
-    {
-    }
     virtual ~Material() = default;
 
     virtual std::string
@@ -83,11 +82,18 @@ namespace hyperelastic
       return false;
     }
 
-    const LameParameters &
-    parameters() const
-    {
-      return lame;
-    }
+    /// The rest-state (small-strain) moduli: the (mu, lambda) whose tensor
+    /// linear_elastic_tangent(mu, lambda) equals dP/dF at F = I. Code that
+    /// needs a modulus scale (round-off estimates, the locking warning, the
+    /// run header) asks this, whatever the model's own constants are.
+    virtual LameParameters
+    small_strain_moduli() const = 0;
+
+    /// The same model with the same constants in 3D. For dim = 2 this is the
+    /// model whose restriction to F = diag(F, 1) the plane-strain model is,
+    /// which gives the out-of-plane stress; for dim = 3 a copy.
+    virtual std::unique_ptr<Material<3>>
+    three_dimensional_twin() const = 0;
 
   protected:
     /// A tensor of NaNs: P (and each block of dP/dF) where a model is
@@ -101,19 +107,58 @@ namespace hyperelastic
           T[i][j] = std::numeric_limits<double>::quiet_NaN();
       return T;
     }
+  };
 
+  /// Base of the models whose constants are the Lame pair (mu, lambda) of
+  /// the scene's shared elastic-constant entries (E and nu, Lame, or shear
+  /// and bulk modulus): it stores the pair exactly as parsed, so that
+  /// small_strain_moduli() returns it bit for bit, and creates the 3D twin.
+  /// @p Model is the derived class template (curiously recurring).
+  template <int dim, template <int> class Model>
+  class LameBasedMaterial : public Material<dim>
+  {
+  public:
+    /// The constants a model of this kind is built from.
+    using Constants = LameParameters;
+
+    explicit LameBasedMaterial(const LameParameters &lame)
+        : lame(lame)
+    {
+    }
+
+    /// The Lame pair the model was built from (for the models that derive
+    /// their own constants from it, their rest-state tangent equals it).
+    LameParameters
+    small_strain_moduli() const override
+    {
+      return lame;
+    }
+
+    std::unique_ptr<Material<3>>
+    three_dimensional_twin() const override
+    {
+      return std::make_unique<Model<3>>(lame);
+    }
+
+  protected:
     const LameParameters lame;
   };
 
-  /// The model names accepted in a scene, separated by '|' (a parameter
-  /// pattern).
+  /// The registered model names (material_registry.h) in registration
+  /// order, separated by '|' (a parameter pattern).
   std::string
   material_model_names();
 
-  /// Create the model called @p name (one of material_model_names()).
+  /// Create the registered model called @p name with the small-strain moduli
+  /// @p small_strain (its tangent at F = I is linear_elastic_tangent of
+  /// them). The Lame-based models take the pair as their constants; a model
+  /// with constants of its own derives them by the split its registration
+  /// documents (Mooney-Rivlin: C1 = 3 mu / 8, C2 = mu / 8, kappa = lambda +
+  /// 2 mu / 3). For tests and tools; scenes go through MaterialParameters.
+  /// An unknown name throws, listing the registered ones.
   template <int dim>
   std::unique_ptr<Material<dim>>
-  create_material(const std::string &name, const LameParameters &lame);
+  create_material(const std::string &name, const LameParameters &small_strain);
 
   /// The small-strain elasticity tensor lambda I x I + 2 mu I^sym written as a
   /// dP/dF tensor; every model's tangent equals it at F = I.

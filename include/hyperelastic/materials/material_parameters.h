@@ -1,4 +1,6 @@
-// The scene's Material subsection: the model and its elastic constants.
+// The scene's Material subsection: the model, the shared elastic constants of
+// the Lame-based models, and the subsections Material/<model> of the models
+// with constants of their own (all from the registry, material_registry.h).
 // Declared with pattern, default and documentation; parsed with the values
 // checked (an invalid value is an InputError naming the entry).
 #pragma once
@@ -6,7 +8,9 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <hyperelastic/materials/material.h>
+#include <hyperelastic/materials/material_registry.h>
 
+#include <memory>
 #include <string>
 
 namespace hyperelastic
@@ -15,12 +19,33 @@ namespace hyperelastic
 
   struct MaterialParameters
   {
-    std::string    model;
-    LameParameters lame;
+    /// Material/Model: a registered model name.
+    std::string model;
+    /// The shared elastic constants (E and nu, Lame, or shear and bulk
+    /// modulus) as (mu, lambda). Read and checked only when the model takes
+    /// them (MaterialModel::uses_elastic_constants); otherwise zero.
+    LameParameters elastic_constants;
+    /// The model with the scene's constants, for either dimension.
+    MaterialFactory factory;
 
     static void
     declare(ParameterHandler &prm);
     void
     parse(ParameterHandler &prm);
+
+  private:
+    /// The shared entries as (mu, lambda), checked; the handler is inside
+    /// the subsection Material.
+    static void
+    parse_elastic_constants(ParameterHandler &prm, LameParameters &lame);
   };
+
+  /// The scene's model in @p dim dimensions (2D scenes also need the 3D twin
+  /// for the out-of-plane stress).
+  template <int dim>
+  std::unique_ptr<Material<dim>>
+  create_material(const MaterialParameters &parameters)
+  {
+    return parameters.factory.template create<dim>();
+  }
 } // namespace hyperelastic

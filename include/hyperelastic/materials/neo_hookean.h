@@ -13,16 +13,26 @@
 namespace hyperelastic
 {
   template <int dim>
-  class NeoHookean : public Material<dim>
+  class NeoHookean : public LameBasedMaterial<dim, NeoHookean>
   {
   public:
-    using Material<dim>::Material;
+    using LameBasedMaterial<dim, NeoHookean>::LameBasedMaterial;
     using Material<dim>::not_a_number_tensor;
 
     std::string
     name() const override
     {
       return "neo-Hookean";
+    }
+
+    /// One paragraph for the scene documentation (material_registry.h).
+    static const char *
+    documentation()
+    {
+      return "Compressible neo-Hookean, psi = mu/2 (I1 - 3) - mu ln J + "
+             "lambda/2 (ln J)^2. The log barrier makes it undefined for "
+             "inverted elements (J <= 0). Constants: the shared elastic "
+             "constants.";
     }
 
     double

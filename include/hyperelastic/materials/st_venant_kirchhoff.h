@@ -10,15 +10,25 @@
 namespace hyperelastic
 {
   template <int dim>
-  class StVenantKirchhoff : public Material<dim>
+  class StVenantKirchhoff : public LameBasedMaterial<dim, StVenantKirchhoff>
   {
   public:
-    using Material<dim>::Material;
+    using LameBasedMaterial<dim, StVenantKirchhoff>::LameBasedMaterial;
 
     std::string
     name() const override
     {
       return "St. Venant-Kirchhoff";
+    }
+
+    /// One paragraph for the scene documentation (material_registry.h).
+    static const char *
+    documentation()
+    {
+      return "Linear elasticity of the Green strain E = (F^T F - I)/2: psi = "
+             "mu E:E + lambda/2 (tr E)^2. Rotation invariant, but it softens "
+             "in compression (a limit point at stretch 1/sqrt(3)) and resists "
+             "inversion only weakly. Constants: the shared elastic constants.";
     }
 
     double

@@ -51,13 +51,13 @@
 namespace hyperelastic
 {
   template <int dim>
-  class StableNeoHookean : public Material<dim>
+  class StableNeoHookean : public LameBasedMaterial<dim, StableNeoHookean>
   {
   public:
     /// @p lame are the user's small-strain constants; the model constants
     /// mu' = 4/3 mu and lambda' = lambda + 5/6 mu are derived from them.
     explicit StableNeoHookean(const LameParameters &lame)
-        : Material<dim>(lame)
+        : LameBasedMaterial<dim, StableNeoHookean>(lame)
         , mu_model(4. / 3. * lame.mu)
         , lambda_model(lame.lambda + 5. / 6. * lame.mu)
     {
@@ -67,6 +67,17 @@ namespace hyperelastic
     name() const override
     {
       return "stable neo-Hookean";
+    }
+
+    /// One paragraph for the scene documentation (material_registry.h).
+    static const char *
+    documentation()
+    {
+      return "Stable neo-Hookean (Smith, de Goes, Kim 2018): J enters "
+             "polynomially, so psi, P and dP/dF are finite for inverted "
+             "elements. Its constants mu' = 4/3 mu and lambda' = lambda + 5/6 "
+             "mu are derived from the shared elastic constants so that the "
+             "small-strain E and nu are the scene's.";
     }
 
     /// psi(F), zero at F = I and finite for every F.

@@ -9,7 +9,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/output/cell_fields.h>
 #include <hyperelastic/solvers/newton_solver.h>
 #include <hyperelastic/output/output_parameters.h>
 
@@ -35,6 +35,9 @@ namespace hyperelastic
     double                       residual = 0.;
     double                       energy   = 0.;
     double                       min_J    = 0.;
+    /// Cells with J <= 0 at a quadrature point (accepted only with
+    /// 'Newton/Inverted elements at equilibrium = warn').
+    dealii::types::global_cell_index inverted_cells = 0;
     /// Force the supports exert on the body, per Dirichlet boundary id: the
     /// sum of f_int - f_ext over the dofs on that boundary, for the
     /// components the condition prescribes (the others are reported as 0).

@@ -1,6 +1,7 @@
-// Linear solves with Trilinos: CG preconditioned by ML smoothed-aggregation
-// AMG (with the rigid-body modes as near-null space), or a direct Amesos
-// solver. Failures become ConvergenceFailure on every rank.
+// Linear solves with Trilinos: CG (GMRES when the tangent is not symmetric)
+// preconditioned by ML smoothed-aggregation AMG (with the rigid-body modes as
+// near-null space), or a direct Amesos solver. Failures become
+// ConvergenceFailure on every rank.
 #pragma once
 
 #include <deal.II/lac/solver_control.h>
@@ -11,6 +12,7 @@
 #include <hyperelastic/solvers/linear_solver_parameters.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace hyperelastic
@@ -35,14 +37,33 @@ namespace hyperelastic
     prepare(const dealii::TrilinosWrappers::SparseMatrix &A);
 
     /// Solves A x = b with CG to @p relative_tolerance (the caller chooses
-    /// it; inexact Newton loosens it). If CG fails with a reused hierarchy, rebuilds it and tries
-    /// once more. Returns the number of Krylov iterations (0 for a direct
-    /// solve).
+    /// it; inexact Newton loosens it). If CG fails with a reused hierarchy,
+    /// rebuilds it and tries once more. Returns the number of Krylov iterations
+    /// (0 for a direct solve).
     unsigned int
     solve(const dealii::TrilinosWrappers::SparseMatrix &A,
           dealii::TrilinosWrappers::MPI::Vector        &x,
           const dealii::TrilinosWrappers::MPI::Vector  &b,
           double                                        relative_tolerance);
+
+    /// Whether the matrices to come are symmetric (CG) or not (GMRES);
+    /// symmetric by default.
+    void
+    set_symmetric(const bool is_symmetric)
+    {
+      symmetric = is_symmetric;
+    }
+
+    /// "CG" or "GMRES": the Krylov method of the iterative solves.
+    std::string
+    krylov_name() const
+    {
+      return symmetric ? "CG" : "GMRES";
+    }
+
+    /// One line saying which solver runs, for the run header.
+    std::string
+    description() const;
 
     /// How often the AMG hierarchy has been built.
     unsigned int
@@ -73,6 +94,7 @@ namespace hyperelastic
     bool         amg_built         = false;
     bool         rebuild_requested = false;
     unsigned int n_setups          = 0;
+    bool         symmetric         = true;
     /// Iterations per decade of the first solve with the current hierarchy
     /// (negative until it has run).
     double baseline_rate = -1.;

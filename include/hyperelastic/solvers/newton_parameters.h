@@ -17,6 +17,15 @@ namespace hyperelastic
     exact_then_projected ///< full Newton; projected where its step fails
   };
 
+  /// What happens to a converged state with inverted elements (J <= 0 at a
+  /// quadrature point).
+  enum class InvertedElements
+  {
+    automatic, ///< warn for models defined at J <= 0, reject otherwise
+    reject,    ///< the attempt fails (and the load step is cut back)
+    warn       ///< the state is accepted, with a warning
+  };
+
   struct NewtonParameters
   {
     unsigned int  max_iterations              = 20;
@@ -31,6 +40,18 @@ namespace hyperelastic
     /// terms (choice 2), at most max_forcing.
     bool   inexact     = true;
     double max_forcing = 0.1;
+    /// "Inverted elements at equilibrium".
+    InvertedElements inverted_elements = InvertedElements::automatic;
+
+    /// Whether a converged state with inverted elements is accepted, for a
+    /// model that is (@p model_defined_there) or is not defined at J <= 0.
+    /// A model undefined there never accepts one.
+    bool
+    accepts_inverted_elements(const bool model_defined_there) const
+    {
+      return model_defined_there &&
+             inverted_elements != InvertedElements::reject;
+    }
 
     static void
     declare(ParameterHandler &prm);

@@ -1,4 +1,5 @@
-// Newton's method with an energy-based backtracking line search, for a
+// Newton's method with a backtracking line search on the total potential
+// energy (or, for a system without one, on the residual norm), for a
 // nonlinear system it knows only through the NonlinearSystem interface:
 // nothing here is specific to elasticity.
 #pragma once
@@ -37,6 +38,10 @@ namespace hyperelastic
     double energy_noise = 0.;
     /// Smallest J of the iterate (NaN if it was not computed).
     double min_J = std::numeric_limits<double>::quiet_NaN();
+    /// Residual norm on the free unknowns (NaN if it was not asked for),
+    /// and its round-off level.
+    double residual       = std::numeric_limits<double>::quiet_NaN();
+    double residual_noise = 0.;
   };
 
   /// What Newton needs from a problem. Every call is collective: all ranks
@@ -71,6 +76,15 @@ namespace hyperelastic
       return false;
     }
 
+    /// Whether the system has a total potential energy (its residual is the
+    /// energy's gradient). Without one the line search tests the residual
+    /// norm instead.
+    virtual bool
+    has_potential() const
+    {
+      return true;
+    }
+
     /// Derivative of the energy at the current iterate along du (negative for
     /// a descent direction). Valid when du leaves the constraints unchanged.
     virtual double
@@ -81,7 +95,8 @@ namespace hyperelastic
     {
       none,          ///< nothing: plain Newton
       admissibility, ///< whether it lies in the model's domain
-      energy         ///< that, and its energy
+      energy,        ///< that, and its energy
+      residual       ///< that, and its residual norm
     };
 
     /// Evaluate u + alpha du.
@@ -117,8 +132,8 @@ namespace hyperelastic
     unsigned int backtracks        = 0;  ///< trials rejected before it
     unsigned int linear_iterations = 0;
     /// Relative Krylov tolerance asked for (0: the linear solver's own).
-    double       forcing           = 0.;
-    bool         projected         = false; ///< tangent made semi-definite
+    double forcing   = 0.;
+    bool   projected = false; ///< tangent made semi-definite
     /// Whether the energy had to decrease (sufficient decrease) in this
     /// iteration's line search; false while prescribed displacements are
     /// still being imposed or without a line search.
@@ -127,11 +142,17 @@ namespace hyperelastic
     double energy        = std::numeric_limits<double>::quiet_NaN();
     double energy_noise  = 0.;
     double min_J         = std::numeric_limits<double>::quiet_NaN();
+    /// The residual norm of the accepted trial, when the line search
+    /// tested it (systems without a potential).
+    double trial_residual = std::numeric_limits<double>::quiet_NaN();
   };
 
   struct NewtonResult
   {
     std::vector<NewtonIteration> history;
+    /// The line search tested the residual norm (no total potential)
+    /// instead of the energy.
+    bool residual_merit = false;
     unsigned int
     iterations() const
     {
@@ -166,15 +187,16 @@ namespace hyperelastic
     /// rows so far of this Newton solve (0 for an exact solve).
     double
     forcing_term(const std::vector<NewtonIteration> &history,
-                 double                               residual_target) const;
+                 double                              residual_target) const;
 
     /// Backtracks from alpha = 1 until the trial is admissible and, if
-    /// @p test_energy, satisfies the sufficient-decrease condition.
+    /// @p test_merit, satisfies the sufficient-decrease condition of the
+    /// energy (or, without a potential, of the residual norm).
     /// Returns false (and the reason) if no step length down to the minimum
     /// is acceptable.
     bool
     line_search(NonlinearSystem  &system,
-                bool              test_energy,
+                bool              test_merit,
                 const TrialPoint &current,
                 NewtonIteration  &row,
                 std::string      &failure) const;

@@ -6,6 +6,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/materials/material_registry.h>
 
 #include "checker.h"
 
@@ -15,16 +16,26 @@
 
 namespace hyperelastic::testing
 {
-  /// The models whose energy is rotation invariant (all but linear
-  /// elasticity).
-  inline const std::vector<std::string> &
+  /// The registered finite-strain models (!is_linear: all but linear
+  /// elasticity, the one model that is not rotation invariant), in
+  /// registration order.
+  inline std::vector<std::string>
   nonlinear_models()
   {
-    static const std::vector<std::string> names = {"St. Venant-Kirchhoff",
-                                                   "corotational",
-                                                   "neo-Hookean",
-                                                   "stable neo-Hookean",
-                                                   "decoupled neo-Hookean"};
+    std::vector<std::string> names;
+    for (const MaterialModel &model : material_models())
+      if (!model.is_linear)
+        names.push_back(model.name);
+    return names;
+  }
+
+  /// Every registered model, in registration order.
+  inline std::vector<std::string>
+  all_models()
+  {
+    std::vector<std::string> names;
+    for (const MaterialModel &model : material_models())
+      names.push_back(model.name);
     return names;
   }
 

@@ -1,6 +1,8 @@
 // Helpers that write scene (.prm) text for the tests.
 #pragma once
 
+#include <hyperelastic/materials/material_registry.h>
+
 #include <sstream>
 #include <string>
 
@@ -16,6 +18,36 @@ namespace hyperelastic::testing
   entry(const std::string &name, const std::string &value)
   {
     return "  set " + name + " = " + value + "\n";
+  }
+
+  /// The Material section for any registered @p model: the shared
+  /// elastic-constant entries @p elastic_entries (read by the Lame-based
+  /// models) and, for a model with constants of its own, its subsection
+  /// Material/<model> holding the constants the registry derives from
+  /// @p small_strain (which should be the moduli @p elastic_entries give).
+  /// For a Lame-based model the section is just Model and @p elastic_entries.
+  inline std::string
+  material_section(const std::string    &model,
+                   const std::string    &elastic_entries,
+                   const LameParameters &small_strain)
+  {
+    std::string own;
+    for (const auto &[name, value] :
+         material_model(model).entries_for_small_strain(small_strain))
+      own += entry(name, value);
+    return subsection("Material",
+                      entry("Model", model) + elastic_entries +
+                        (own.empty() ? "" : subsection(model, own)));
+  }
+
+  /// (mu, lambda) as a LameParameters.
+  inline LameParameters
+  lame_parameters(const double mu, const double lambda)
+  {
+    LameParameters p;
+    p.mu     = mu;
+    p.lambda = lambda;
+    return p;
   }
 
   inline std::string

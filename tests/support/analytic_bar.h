@@ -28,6 +28,51 @@ namespace hyperelastic::testing
     return 0.5 * (a + b);
   }
 
+  /// Decoupled Mooney-Rivlin, psi = c1 (J^(-2/3) I1 - 3) + c2 (J^(-4/3) I2
+  /// - 3) + kappa/4 (J^2 - 1 - 2 ln J), F = diag(l1, l2, l2) (3D) or
+  /// diag(l1, l2, 1) (plane strain).
+  inline UniaxialState
+  uniaxial_mooney_rivlin(const int    dim,
+                         const double l1,
+                         const double c1,
+                         const double c2,
+                         const double kappa)
+  {
+    // Principal stretches (l1, l2, l3) with l3 = l2 (3D) or 1 (2D).
+    const auto l3 = [&](double l2) { return dim == 3 ? l2 : 1.; };
+    // For a diagonal F the stress is diagonal, and with I1 = sum l_a^2,
+    // I2 = sum over pairs l_a^2 l_b^2, dI1/dl_a = 2 l_a and dI2/dl_a =
+    // 2 l_a (I1 - l_a^2):
+    //   l_a P_aa = 2 c1 J^(-2/3) (l_a^2 - I1/3)
+    //            + 2 c2 J^(-4/3) (l_a^2 (I1 - l_a^2) - 2/3 I2)
+    //            + kappa/2 (J^2 - 1).
+    const auto stretch_term = [&](double l2, double la) {
+      const double a = l1 * l1, b = l2 * l2, c = l3(l2) * l3(l2);
+      const double J  = l1 * l2 * l3(l2);
+      const double I1 = a + b + c, I2 = a * b + b * c + a * c;
+      const double J_23 = std::pow(J, -2. / 3.);
+      return 2. * c1 * J_23 * (la * la - I1 / 3.) +
+             2. * c2 * J_23 * J_23 * (la * la * (I1 - la * la) - 2. / 3. * I2) +
+             0.5 * kappa * (J * J - 1.);
+    };
+    // P22 = 0 <=> g(l2) = l2 P22 = 0. Written out,
+    //   3D: g = 2 c1 / 3 l1^(-2/3) (l2^(2/3) - l1^2 l2^(-4/3))
+    //         + 2 c2 / 3 l1^(-4/3) (l2^(4/3) - l1^2 l2^(-2/3))
+    //         + kappa/2 (l1^2 l2^4 - 1),
+    //   2D: g = 2 c1 / 3 l1^(-2/3) (2 l2^(4/3) - (l1^2 + 1) l2^(-2/3))
+    //         + 2 c2 / 3 l1^(-4/3) ((l1^2 + 1) l2^(2/3) - 2 l1^2 l2^(-4/3))
+    //         + kappa/2 (l1^2 l2^2 - 1),
+    // every term increasing in l2 > 0 (c1, c2 >= 0), g -> -infinity as
+    // l2 -> 0 and without bound as l2 grows: exactly one root. The upper
+    // end of the bracket is doubled until g changes sign.
+    const auto g     = [&](double l2) { return stretch_term(l2, l2); };
+    double     upper = 10.;
+    while (!(g(upper) > 0.) && upper < 1e6)
+      upper *= 2.;
+    const double l2 = bisect(g, 1e-6, upper);
+    return {l2, stretch_term(l2, l1) / l1};
+  }
+
   /// 3D: F = diag(l1, l2, l2); 2D plane strain: F = diag(l1, l2, 1).
   inline UniaxialState
   uniaxial(const std::string &model,
@@ -114,6 +159,12 @@ namespace hyperelastic::testing
                  std::min(l_J1, l_shear),
                  std::max(l_J1, l_shear));
         return {l2, stretch_term(l2, l1) / l1};
+      }
+    if (model == "Mooney-Rivlin")
+      {
+        // The registry's small-strain split (mooney_rivlin.h).
+        return uniaxial_mooney_rivlin(
+          dim, l1, 3. / 8. * mu, 1. / 8. * mu, lambda + 2. / 3. * mu);
       }
     if (model == "St. Venant-Kirchhoff")
       {

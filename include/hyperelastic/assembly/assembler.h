@@ -1,0 +1,44 @@
+// The material part of the discrete problem: what an assembler computes for a
+// displacement field u (internal forces, tangent, stored energy, smallest J).
+// Two implementations: the P1 kernel (assembly/p1_assembler.h) and the
+// generic FEValues loops (assembly/generic_assembler.h). Loads are not here:
+// they are LoadTerms (loads/load_term.h), added by ElasticityOperator.
+#pragma once
+
+#include <deal.II/lac/affine_constraints.h>
+
+#include <hyperelastic/assembly/assembly_tools.h>
+
+namespace hyperelastic
+{
+  template <int dim>
+  class Assembler
+  {
+  public:
+    virtual ~Assembler() = default;
+
+    /// Internal forces f_int(u) = int P(F) grad N_a dV on the owned rows
+    /// (u with ghost entries). Returns the round-off level of their l2 norm
+    /// (collective).
+    virtual double
+    internal_forces(const VectorType &u, VectorType &internal) const = 0;
+
+    /// Tangent K = d f_int / du and right-hand side -f_int, condensed with
+    /// @p constraints (their inhomogeneities imposed: a constrained row reads
+    /// d du_r = d g_r). With @p project_tangent, dP/dF is projected to
+    /// positive semi-definite first. Returns false, having written nothing,
+    /// if this assembler cannot handle @p constraints or @p matrix (the same
+    /// answer on all ranks). Collective.
+    virtual bool
+    system(const VectorType                        &u,
+           const dealii::AffineConstraints<double> &constraints,
+           bool                                     project_tangent,
+           MatrixType                              &matrix,
+           VectorType                              &rhs) const = 0;
+
+    /// Stored energy int psi(F) dV (if @p with_energy) with its round-off
+    /// level, and the smallest J at the quadrature points. Collective.
+    virtual EnergyEvaluation
+    stored_energy(const VectorType &u, bool with_energy) const = 0;
+  };
+} // namespace hyperelastic

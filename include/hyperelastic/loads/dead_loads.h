@@ -1,0 +1,87 @@
+// Dead loads, fixed in the reference configuration: a body force per unit
+// reference volume and tractions per unit reference area. Their forces do
+// not depend on u, so they have no load stiffness and their potential is
+// minus their work.
+#pragma once
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+
+#include <hyperelastic/loads/load_term.h>
+
+namespace hyperelastic
+{
+  /// int b(X, t) N_a dV over the reference body.
+  template <int dim>
+  class BodyForce : public LoadTerm<dim>
+  {
+  public:
+    BodyForce(dealii::Function<dim>         &force,
+              const dealii::DoFHandler<dim> &dof_handler,
+              const dealii::Mapping<dim>    &mapping);
+
+    std::string
+    name() const override
+    {
+      return "Loading/Body force";
+    }
+
+    bool
+    depends_on_solution() const override
+    {
+      return false;
+    }
+
+    void
+    add_forces(const VectorType &u,
+               double            t,
+               VectorType       &forces) const override;
+
+  private:
+    dealii::Function<dim>         &force;
+    const dealii::DoFHandler<dim> &dof_handler;
+    const dealii::Mapping<dim>    &mapping;
+    /// One degree above the element's.
+    const dealii::Quadrature<dim> quadrature;
+  };
+
+  /// int t0(X, t) N_a dA over the reference faces with one boundary id.
+  template <int dim>
+  class DeadTraction : public LoadTerm<dim>
+  {
+  public:
+    /// @p subsection: the scene section, for messages ("Traction 1").
+    DeadTraction(dealii::Function<dim>         &traction,
+                 dealii::types::boundary_id     boundary_id,
+                 const std::string             &subsection,
+                 const dealii::DoFHandler<dim> &dof_handler,
+                 const dealii::Mapping<dim>    &mapping);
+
+    std::string
+    name() const override
+    {
+      return subsection + "/Traction";
+    }
+
+    bool
+    depends_on_solution() const override
+    {
+      return false;
+    }
+
+    void
+    add_forces(const VectorType &u,
+               double            t,
+               VectorType       &forces) const override;
+
+  private:
+    dealii::Function<dim>            &traction;
+    const dealii::types::boundary_id  boundary_id;
+    const std::string                 subsection;
+    const dealii::DoFHandler<dim>    &dof_handler;
+    const dealii::Mapping<dim>       &mapping;
+    const dealii::Quadrature<dim - 1> quadrature;
+  };
+} // namespace hyperelastic

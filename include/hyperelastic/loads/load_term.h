@@ -1,0 +1,88 @@
+// The interface of a load term: one contribution g(u, t) to the nodal forces
+// acting on the body, with its load stiffness -dg/du if it depends on u and
+// its potential if it has one. ElasticityOperator sums the material part and
+// the terms; Newton learns from it whether a total potential exists (energy
+// line search) and whether the tangent is symmetric (CG or GMRES).
+//
+// A new kind of load is one class deriving from LoadTerm plus one line in
+// create_load_terms() (loads/load_terms.cc).
+#pragma once
+
+#include <deal.II/lac/affine_constraints.h>
+
+#include <hyperelastic/assembly/assembly_tools.h>
+#include <hyperelastic/base/error_handling.h>
+
+#include <string>
+
+namespace hyperelastic
+{
+  template <int dim>
+  class LoadTerm
+  {
+  public:
+    virtual ~LoadTerm() = default;
+
+    /// The scene section that defines the term, for messages.
+    virtual std::string
+    name() const = 0;
+
+    /// Whether the forces depend on the displacement (follower loads). Terms
+    /// that do not are evaluated once per load factor, and their potential
+    /// is minus their work, -g(t) . u.
+    virtual bool
+    depends_on_solution() const = 0;
+
+    /// Whether the forces derive from a potential (always true for a term
+    /// independent of u). A tangent of a conservative term is symmetric.
+    virtual bool
+    is_conservative() const
+    {
+      return !depends_on_solution();
+    }
+
+    /// Adds the nodal forces g(u, t) to @p forces (owned rows; entries
+    /// added to other ranks' rows are sent by the caller's compress()). @p u
+    /// has ghost entries. Throws InputError on every rank, naming the entry,
+    /// if the load is not finite somewhere. Collective.
+    virtual void
+    add_forces(const VectorType &u, double t, VectorType &forces) const = 0;
+
+    /// Adds the load stiffness -dg/du to @p matrix, condensed with the
+    /// Dirichlet @p constraints (constrained rows untouched, constrained
+    /// columns moved to @p rhs with their prescribed values); the caller
+    /// compresses both. Only called if depends_on_solution(). Collective.
+    virtual void
+    add_load_stiffness(const VectorType                        &u,
+                       double                                   t,
+                       const dealii::AffineConstraints<double> &constraints,
+                       MatrixType                              &matrix,
+                       VectorType                              &rhs) const
+    {
+      (void)u, (void)t, (void)constraints, (void)matrix, (void)rhs;
+    }
+
+    /// The potential V(u, t), with dV/du = -g: only called if
+    /// depends_on_solution() and is_conservative(). Collective.
+    virtual double
+    potential(const VectorType &u, double t) const
+    {
+      (void)u, (void)t;
+      return 0.;
+    }
+  };
+
+  /// Throws InputError on every rank if the load of scene entry @p entry was
+  /// not finite on some rank (@p bad_here on this one).
+  inline void
+  throw_if_load_not_finite(const bool         bad_here,
+                           const std::string &entry,
+                           const MPI_Comm     comm)
+  {
+    if (dealii::Utilities::MPI::max(bad_here ? 1 : 0, comm) != 0)
+      throw InputError(
+        "scene entry '" + entry +
+        "' is not a finite number somewhere on the mesh (a division by zero, "
+        "the logarithm of a negative number or similar)");
+  }
+} // namespace hyperelastic

@@ -1,0 +1,38 @@
+// Post-processing: per-cell quantities of a displacement field for the VTU
+// output (J, energy density, Cauchy stress, von Mises stress).
+#pragma once
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <hyperelastic/materials/material.h>
+
+#include <array>
+
+namespace hyperelastic
+{
+  /// Cell-wise derived quantities of a displacement field, for output. For
+  /// P1 they are exact; for higher degrees they are cell averages.
+  struct CellFields
+  {
+    dealii::Vector<double> J;
+    dealii::Vector<double> energy_density;
+    dealii::Vector<double> von_mises;
+    /// Cauchy stress components xx, yy, zz, xy, xz, yz (zz from plane strain
+    /// in 2D; xz and yz are zero there).
+    std::array<dealii::Vector<double>, 6> cauchy;
+  };
+
+  /// The fields of the locally owned cells for displacement @p u (with
+  /// ghost entries). @p material3d is the 3D twin of @p material, for the
+  /// plane-strain out-of-plane stress (the same model in 3D).
+  template <int dim>
+  CellFields
+  compute_cell_fields(const dealii::DoFHandler<dim>               &dof_handler,
+                      const dealii::Mapping<dim>                  &mapping,
+                      const Material<dim>                         &material,
+                      const Material<3>                           &material3d,
+                      const dealii::TrilinosWrappers::MPI::Vector &u);
+} // namespace hyperelastic

@@ -1,0 +1,91 @@
+// Cell averages of J, energy density and Cauchy stress for the VTU output.
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/fe_values_extractors.h>
+
+#include <hyperelastic/output/cell_fields.h>
+
+#include <cmath>
+
+namespace hyperelastic
+{
+  using namespace dealii;
+
+  template <int dim>
+  CellFields
+  compute_cell_fields(const DoFHandler<dim>               &dof_handler,
+                      const Mapping<dim>                  &mapping,
+                      const Material<dim>                 &material,
+                      const Material<3>                   &material3d,
+                      const TrilinosWrappers::MPI::Vector &u)
+  {
+    const unsigned int n_cells =
+      dof_handler.get_triangulation().n_active_cells();
+    CellFields fields;
+    fields.J.reinit(n_cells);
+    fields.energy_density.reinit(n_cells);
+    fields.von_mises.reinit(n_cells);
+    for (auto &c : fields.cauchy)
+      c.reinit(n_cells);
+
+    const QGaussSimplex<dim>         quadrature(dof_handler.get_fe().degree);
+    FEValues<dim>                    values(mapping,
+                         dof_handler.get_fe(),
+                         quadrature,
+                         update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<Tensor<2, dim>>      grad_u(quadrature.size());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          values.reinit(cell);
+          values[displacement].get_function_gradients(u, grad_u);
+          const unsigned int index  = cell->active_cell_index();
+          double             volume = 0.;
+          Tensor<2, 3>       sigma;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const double         JxW = values.JxW(q);
+              const Tensor<2, dim> F =
+                Tensor<2, dim>(unit_symmetric_tensor<dim>()) + grad_u[q];
+              // Plane strain: the 3D F is diag(F, 1).
+              Tensor<2, 3> F3 = unit_symmetric_tensor<3>();
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = 0; j < dim; ++j)
+                  F3[i][j] = F[i][j];
+              const double J = determinant(F);
+              fields.J[index] += J * JxW;
+              fields.energy_density[index] += material.energy_density(F) * JxW;
+              // Cauchy stress sigma = P F^T / J.
+              sigma += material3d.first_piola_kirchhoff(F3) * transpose(F3) /
+                       determinant(F3) * JxW;
+              volume += JxW;
+            }
+          fields.J[index] /= volume;
+          fields.energy_density[index] /= volume;
+          sigma /= volume;
+          const unsigned int pairs[6][2] = {
+            {0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+          for (unsigned int c = 0; c < 6; ++c)
+            fields.cauchy[c][index] = sigma[pairs[c][0]][pairs[c][1]];
+          const Tensor<2, 3> dev =
+            sigma -
+            trace(sigma) / 3. * Tensor<2, 3>(unit_symmetric_tensor<3>());
+          fields.von_mises[index] = std::sqrt(1.5 * scalar_product(dev, dev));
+        }
+    return fields;
+  }
+
+  template CellFields
+  compute_cell_fields<2>(const DoFHandler<2> &,
+                         const Mapping<2> &,
+                         const Material<2> &,
+                         const Material<3> &,
+                         const TrilinosWrappers::MPI::Vector &);
+  template CellFields
+  compute_cell_fields<3>(const DoFHandler<3> &,
+                         const Mapping<3> &,
+                         const Material<3> &,
+                         const Material<3> &,
+                         const TrilinosWrappers::MPI::Vector &);
+} // namespace hyperelastic
