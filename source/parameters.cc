@@ -4,6 +4,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/loads/load_terms.h>
 #include <hyperelastic/materials/material_registry.h>
 #include <hyperelastic/parameters.h>
 
@@ -114,12 +115,20 @@ namespace hyperelastic
           reject(c.subsection + "/Components",
                  "z",
                  "there is no z component in 2D");
-    for (const auto &c : loading.tractions)
-      if (c.expressions.size() != dim)
-        reject(c.subsection + "/Traction",
-               size(c.expressions) + " expressions",
-               "needs " + std::to_string(dim) +
-                 " expressions separated by ';'");
+    for (const auto &c : loading.boundary_loads)
+      {
+        const bool vector_valued =
+          boundary_load_kind(c.kind).vector_valued;
+        if (vector_valued && c.expressions.size() != dim)
+          reject(c.subsection + "/" + c.kind,
+                 size(c.expressions) + " expressions",
+                 "needs " + std::to_string(dim) +
+                   " expressions separated by ';'");
+        if (!vector_valued && c.expressions.size() != 1)
+          reject(c.subsection + "/" + c.kind,
+                 size(c.expressions) + " expressions",
+                 "needs one expression");
+      }
     // Accepting inverted equilibria needs a model defined at J <= 0.
     if (newton.inverted_elements == InvertedElements::warn)
       {

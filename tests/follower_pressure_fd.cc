@@ -48,9 +48,11 @@ namespace
                 cell->face(f)->set_boundary_id(whole_boundary);
       LoadingParameters loading;
       if (closed)
-        loading.pressures.push_back({whole_boundary, "0.7*t", "Pressure 1"});
+        loading.boundary_loads.push_back(
+          {"Pressure", whole_boundary, {"0.7*t"}, "Pressure 1"});
       else
-        loading.pressures.push_back({1, "1 + x*y + t", "Pressure 1"});
+        loading.boundary_loads.push_back(
+          {"Pressure", 1, {"1 + x*y + t"}, "Pressure 1"});
       std::set<types::boundary_id> ids = box.boundary_ids;
       ids.insert(whole_boundary);
       bc = std::make_unique<BoundaryConditions<dim>>(loading, ids);

@@ -57,8 +57,8 @@ namespace
       }
     loading.dirichlet.push_back(left);
     loading.dirichlet.push_back({1, {0}, {"0.4*t"}, "Dirichlet 2"});
-    loading.tractions.push_back(
-      {2, std::vector<std::string>(dim, "0.3*t*x"), "Traction 1"});
+    loading.boundary_loads.push_back(
+      {"Traction", 2, std::vector<std::string>(dim, "0.3*t*x"), "Traction 1"});
     loading.body_force = std::vector<std::string>(dim, "-0.2*t");
     const BoundaryConditions<dim> bc(loading, box.boundary_ids);
     const ElasticityOperator<dim> fast(dof_handler, mapping, *material, bc);

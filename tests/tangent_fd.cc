@@ -38,8 +38,8 @@ namespace
     const auto material = create_material<dim>(model, lame);
     // Loads do not enter the tangent; a traction checks they stay out of it.
     LoadingParameters loading;
-    loading.tractions.push_back(
-      {1, std::vector<std::string>(dim, "0.3*t"), "Traction 1"});
+    loading.boundary_loads.push_back(
+      {"Traction", 1, std::vector<std::string>(dim, "0.3*t"), "Traction 1"});
     const BoundaryConditions<dim> bc(loading, box.boundary_ids);
     const ElasticityOperator<dim> op(box.dof_handler, box.mapping, *material, bc);
 

@@ -108,24 +108,15 @@ namespace hyperelastic
                                       c.subsection + "/Displacement"),
            c.subsection});
       }
-    for (const auto &c : loading.tractions)
+    for (const auto &c : loading.boundary_loads)
       {
         check_id(c.boundary_id, c.subsection);
-        tractions.push_back(
-          {c.boundary_id,
+        boundary_loads.push_back(
+          {c.kind,
+           c.boundary_id,
            parse_vector_function<dim>(c.expressions,
                                       loading.constants,
-                                      c.subsection + "/Traction"),
-           c.subsection});
-      }
-    for (const auto &c : loading.pressures)
-      {
-        check_id(c.boundary_id, c.subsection);
-        pressures.push_back(
-          {c.boundary_id,
-           parse_vector_function<dim>({c.expression},
-                                      loading.constants,
-                                      c.subsection + "/Pressure"),
+                                      c.subsection + "/" + c.kind),
            c.subsection});
       }
     if (!loading.body_force.empty())

@@ -1,9 +1,11 @@
-// The scene's Loading subsection and its Dirichlet, Traction and Pressure
-// subsections: declaration, documentation and validation of their entries.
+// The scene's Loading subsection, its Dirichlet subsections and the sections of
+// the registered boundary loads: declaration, documentation and validation of
+// their entries.
 #include <deal.II/base/utilities.h>
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/loads/load_terms.h>
 #include <hyperelastic/loads/loading_parameters.h>
 
 #include <algorithm>
@@ -59,43 +61,20 @@ namespace hyperelastic
                           "the reference point (x, y, z) at load factor t.");
         prm.leave_subsection();
       }
-    for (unsigned int i = 1; i <= max_tractions; ++i)
-      {
-        prm.enter_subsection("Traction " + std::to_string(i));
-        prm.declare_entry("Boundary id",
-                          "-1",
-                          Integer(-1),
-                          "Boundary id loaded by this traction; -1 leaves this "
-                          "slot unused.");
-        prm.declare_entry("Traction",
-                          "0; 0; 0",
-                          Anything(),
-                          "Force per unit reference area (a nominal, "
-                          "dead-load traction): dim expressions of x, y, (z,) "
-                          "t separated by ';'.");
-        prm.leave_subsection();
-      }
-    for (unsigned int i = 1; i <= max_pressures; ++i)
-      {
-        prm.enter_subsection("Pressure " + std::to_string(i));
-        prm.declare_entry("Boundary id",
-                          "-1",
-                          Integer(-1),
-                          "Boundary id loaded by this pressure; -1 leaves this "
-                          "slot unused.");
-        prm.declare_entry(
-          "Pressure",
-          "0",
-          Anything(),
-          "Pressure p (force per unit deformed area, positive pushes into the "
-          "body): one expression of the reference position x, y, (z,) and t. "
-          "A follower load: it acts along the deformed normal on the "
-          "deformed area, p J F^-T N dA, and adds a load stiffness to the "
-          "tangent (non-symmetric unless the loaded surface is closed and p "
-          "uniform, when the load has the potential p times the enclosed "
-          "volume).");
-        prm.leave_subsection();
-      }
+    for (const BoundaryLoadKind &kind : boundary_load_kinds())
+      for (unsigned int i = 1; i <= kind.max_sections; ++i)
+        {
+          prm.enter_subsection(kind.name + " " + std::to_string(i));
+          prm.declare_entry("Boundary id",
+                            "-1",
+                            Integer(-1),
+                            kind.id_documentation);
+          prm.declare_entry(kind.name,
+                            kind.default_value,
+                            Anything(),
+                            kind.value_documentation);
+          prm.leave_subsection();
+        }
   }
 
   void
@@ -177,31 +156,19 @@ namespace hyperelastic
           }
         prm.leave_subsection();
       }
-    for (unsigned int i = 1; i <= max_tractions; ++i)
-      {
-        const std::string section = "Traction " + std::to_string(i);
-        prm.enter_subsection(section);
-        const int id = prm.get_integer("Boundary id");
-        if (id >= 0)
-          {
-            TractionCondition c;
-            c.boundary_id = id;
-            c.subsection  = section;
-            c.expressions = split_expressions(prm.get("Traction"));
-            tractions.push_back(c);
-          }
-        prm.leave_subsection();
-      }
-    for (unsigned int i = 1; i <= max_pressures; ++i)
-      {
-        const std::string section = "Pressure " + std::to_string(i);
-        prm.enter_subsection(section);
-        const int id = prm.get_integer("Boundary id");
-        if (id >= 0)
-          pressures.push_back({static_cast<dealii::types::boundary_id>(id),
-                               prm.get("Pressure"),
-                               section});
-        prm.leave_subsection();
-      }
+    for (const BoundaryLoadKind &kind : boundary_load_kinds())
+      for (unsigned int i = 1; i <= kind.max_sections; ++i)
+        {
+          const std::string section = kind.name + " " + std::to_string(i);
+          prm.enter_subsection(section);
+          const int id = prm.get_integer("Boundary id");
+          if (id >= 0)
+            boundary_loads.push_back(
+              {kind.name,
+               static_cast<dealii::types::boundary_id>(id),
+               split_expressions(prm.get(kind.name)),
+               section});
+          prm.leave_subsection();
+        }
   }
 } // namespace hyperelastic

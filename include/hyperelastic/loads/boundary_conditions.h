@@ -1,8 +1,8 @@
 // Loads and supports of a scene as functions of (x, y, z, t): prescribed
-// displacements (Dirichlet, with a component mask), dead-load tractions per
-// unit reference area, body forces per unit reference volume and follower
-// pressures per unit deformed area. The forces they exert are LoadTerms
-// (loads/load_term.h).
+// displacements (Dirichlet, with a component mask), body forces per unit
+// reference volume and the boundary loads of the registered kinds (dead
+// tractions, follower pressures, ...). The forces they exert are LoadTerms
+// (loads/load_term.h, loads/load_terms.h).
 #pragma once
 
 #include <deal.II/base/function.h>
@@ -32,19 +32,14 @@ namespace hyperelastic
     std::string                            subsection;
   };
 
+  /// A boundary load of a registered kind (traction, pressure, ...) with its
+  /// value parsed: dim components for a vector-valued kind, else one.
   template <int dim>
-  struct TractionBoundary
+  struct BoundaryLoad
   {
+    std::string                            kind; ///< BoundaryLoadKind::name
     boundary_id                            id;
-    std::unique_ptr<dealii::Function<dim>> traction;
-    std::string                            subsection;
-  };
-
-  template <int dim>
-  struct PressureBoundary
-  {
-    boundary_id                            id;
-    std::unique_ptr<dealii::Function<dim>> pressure; ///< one component
+    std::unique_ptr<dealii::Function<dim>> value;
     std::string                            subsection;
   };
 
@@ -52,8 +47,7 @@ namespace hyperelastic
   struct BoundaryConditions
   {
     std::vector<DirichletBoundary<dim>>    dirichlet;
-    std::vector<TractionBoundary<dim>>     tractions;
-    std::vector<PressureBoundary<dim>>     pressures;
+    std::vector<BoundaryLoad<dim>>         boundary_loads;
     std::unique_ptr<dealii::Function<dim>> body_force; ///< null: none
 
     /// Parses every expression and checks that each named boundary id exists

@@ -10,6 +10,7 @@
 #include <deal.II/fe/mapping.h>
 
 #include <hyperelastic/loads/load_term.h>
+#include <hyperelastic/loads/loading_parameters.h>
 
 namespace hyperelastic
 {
@@ -58,6 +59,23 @@ namespace hyperelastic
                  const std::string             &subsection,
                  const dealii::DoFHandler<dim> &dof_handler,
                  const dealii::Mapping<dim>    &mapping);
+
+    /// The scene sections "Traction 1" ... "Traction 4".
+    static BoundaryLoadKind
+    scene_kind()
+    {
+      BoundaryLoadKind kind;
+      kind.name          = "Traction";
+      kind.max_sections  = 4;
+      kind.vector_valued = true;
+      kind.default_value = "0; 0; 0";
+      kind.id_documentation =
+        "Boundary id loaded by this traction; -1 leaves this slot unused.";
+      kind.value_documentation =
+        "Force per unit reference area (a nominal, dead-load traction): dim "
+        "expressions of x, y, (z,) t separated by ';'.";
+      return kind;
+    }
 
     std::string
     name() const override

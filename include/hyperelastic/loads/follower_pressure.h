@@ -23,6 +23,7 @@
 #include <deal.II/fe/mapping.h>
 
 #include <hyperelastic/loads/load_term.h>
+#include <hyperelastic/loads/loading_parameters.h>
 
 namespace hyperelastic
 {
@@ -36,6 +37,27 @@ namespace hyperelastic
                      const std::string             &subsection,
                      const dealii::DoFHandler<dim> &dof_handler,
                      const dealii::Mapping<dim>    &mapping);
+
+    /// The scene sections "Pressure 1" ... "Pressure 4".
+    static BoundaryLoadKind
+    scene_kind()
+    {
+      BoundaryLoadKind kind;
+      kind.name          = "Pressure";
+      kind.max_sections  = 4;
+      kind.vector_valued = false;
+      kind.default_value = "0";
+      kind.id_documentation =
+        "Boundary id loaded by this pressure; -1 leaves this slot unused.";
+      kind.value_documentation =
+        "Pressure p (force per unit deformed area, positive pushes into the "
+        "body): one expression of the reference position x, y, (z,) and t. "
+        "A follower load: it acts along the deformed normal on the deformed "
+        "area, p J F^-T N dA, and adds a load stiffness to the tangent "
+        "(non-symmetric unless the loaded surface is closed and p uniform, "
+        "when the load has the potential p times the enclosed volume).";
+      return kind;
+    }
 
     std::string
     name() const override

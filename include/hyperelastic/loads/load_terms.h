@@ -1,5 +1,9 @@
 // The registry of load terms: which LoadTerm each loading section of a scene
-// becomes.
+// becomes. A new kind of boundary load is a LoadTerm class with a static
+// scene_kind() (its scene section, loads/loading_parameters.h) and a
+// constructor (value function, boundary id, subsection, dof handler,
+// mapping), registered with one line in source/loads/load_terms.cc: the scene
+// entries, their documentation, validation and the term itself follow.
 #pragma once
 
 #include <deal.II/dofs/dof_handler.h>
@@ -7,15 +11,25 @@
 
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/loads/load_term.h>
+#include <hyperelastic/loads/loading_parameters.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace hyperelastic
 {
-  /// One term per load of @p bc: the body force, each traction, each
-  /// pressure. The terms refer to the functions in @p bc, which must outlive
-  /// them.
+  /// The kinds of boundary load a scene can have, in registration order
+  /// (the order of their sections in the scene documentation).
+  const std::vector<BoundaryLoadKind> &
+  boundary_load_kinds();
+
+  /// The registered kind called @p name (an internal error if none is).
+  const BoundaryLoadKind &
+  boundary_load_kind(const std::string &name);
+
+  /// One term per load of @p bc: the body force, then each boundary load.
+  /// The terms refer to the functions in @p bc, which must outlive them.
   template <int dim>
   std::vector<std::unique_ptr<LoadTerm<dim>>>
   create_load_terms(const BoundaryConditions<dim> &bc,

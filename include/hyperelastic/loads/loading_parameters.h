@@ -1,4 +1,6 @@
-// The scene's Loading subsection and its Dirichlet and Traction subsections.
+// The scene's Loading subsection, its Dirichlet subsections and the sections
+// of the boundary loads ("Traction 1", "Pressure 1", ...: one kind per
+// registered boundary load term, loads/load_terms.h).
 // Declared with pattern, default and documentation; parsed with the values
 // checked (an invalid value is an InputError naming the entry).
 #pragma once
@@ -23,21 +25,30 @@ namespace hyperelastic
     std::string                subsection;  ///< for error messages
   };
 
-  /// A traction (force per unit reference area) on one boundary id.
-  struct TractionCondition
+  /// How a kind of boundary load appears in a scene: the sections
+  /// "<name> 1" ... "<name> <max_sections>", each with the entries
+  /// "Boundary id" and "<name>" (the value: dim expressions separated by ';'
+  /// if vector_valued, else one). Each boundary LoadTerm class describes its
+  /// kind (scene_kind()); loads/load_terms.cc lists the kinds.
+  struct BoundaryLoadKind
   {
-    dealii::types::boundary_id boundary_id = 0;
-    std::vector<std::string>   expressions; ///< one per space dimension
-    std::string                subsection;
+    std::string  name;
+    unsigned int max_sections = 4;
+    bool         vector_valued = true;
+    std::string  default_value;
+    /// Documentation of "Boundary id" and of the value entry.
+    std::string id_documentation;
+    std::string value_documentation;
   };
 
-  /// A follower pressure (force per unit deformed area along the deformed
-  /// normal) on one boundary id.
-  struct PressureCondition
+  /// One used section of a boundary load (its boundary id is >= 0).
+  struct BoundaryLoadSection
   {
+    std::string                kind; ///< BoundaryLoadKind::name
     dealii::types::boundary_id boundary_id = 0;
-    std::string                expression; ///< p(x, y, (z,) t)
-    std::string                subsection;
+    /// The value entry split at ';' (dim of them for a vector-valued kind).
+    std::vector<std::string> expressions;
+    std::string              subsection; ///< "Traction 1", for messages
   };
 
   struct LoadingParameters
@@ -46,12 +57,11 @@ namespace hyperelastic
     std::vector<std::string>        body_force; ///< empty: no body force
     std::map<std::string, double>   constants;
     std::vector<DirichletCondition> dirichlet;
-    std::vector<TractionCondition>  tractions;
-    std::vector<PressureCondition>  pressures;
+    /// The used sections of every registered kind, kind by kind in the
+    /// order of boundary_load_kinds().
+    std::vector<BoundaryLoadSection> boundary_loads;
 
     static constexpr unsigned int max_dirichlet = 8;
-    static constexpr unsigned int max_tractions = 4;
-    static constexpr unsigned int max_pressures = 4;
 
     static void
     declare(ParameterHandler &prm);
