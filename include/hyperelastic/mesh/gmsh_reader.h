@@ -1,0 +1,40 @@
+// Reading a gmsh file into a list of cells: one pass over the ASCII file
+// (formats 1, 2.2, 4.0 and 4.1), the cells deal.II's GridIn::read_msh would
+// build, with the gmsh element number of every cell and the physical tags as
+// material ids (cells) and boundary ids (faces).
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <string>
+#include <vector>
+
+namespace hyperelastic
+{
+  /// The cells of a gmsh file as read: what deal.II's GridIn::read_msh would
+  /// hand to Triangulation::create_triangulation (the same vertices in the
+  /// same order, cells with the physical tag as material id), plus the
+  /// element numbers, for messages.
+  template <int dim>
+  struct GmshMesh
+  {
+    std::vector<dealii::Point<dim>>    vertices;
+    std::vector<dealii::CellData<dim>> cells;
+    /// Faces with boundary ids (2D: lines, 3D: triangles) and their
+    /// element numbers. (Lines in 3D are read and dropped: only faces
+    /// carry boundary ids in a distributed triangulation.)
+    dealii::SubCellData    boundary;
+    std::vector<long long> boundary_numbers;
+    std::vector<long long> element_numbers; ///< of cells
+    /// Bounds of the nodes of the cells, in all three coordinates.
+    dealii::Point<3> lower, upper;
+  };
+
+  /// Reads an ASCII gmsh file, format 1, 2 or 4, as a mesh of triangles
+  /// (dim = 2) or tetrahedra (dim = 3). Points, lines and, in 3D,
+  /// triangles carry boundary ids; any other element type is an error.
+  template <int dim>
+  GmshMesh<dim>
+  read_gmsh(const std::string &file_name);
+} // namespace hyperelastic
