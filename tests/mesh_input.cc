@@ -1,4 +1,5 @@
-// Mesh input (source/mesh/mesh.cc): one rank reads, checks and partitions
+// Mesh input (source/mesh/: gmsh_reader, mesh_checks, mesh_distribution,
+// mesh.cc): one rank reads, checks and partitions
 // the mesh; the others receive their part.
 //
 // 1. Vertex order: the gmsh bar (meshes/bar_DIMd.msh) and the same mesh with

@@ -22,7 +22,7 @@ namespace hyperelastic
       Selection("box|file"),
       "'box': a generated box of simplices (rectangle in 2D) with boundary ids "
       "0/1 on the faces x = min/max, 2/3 on y = min/max, 4/5 on z = min/max. "
-      "'file': a gmsh .msh file (format 2 or 4, ASCII) whose physical tags on "
+      "'file': a gmsh .msh file (format 1, 2.2, 4.0 or 4.1, ASCII) whose physical tags on "
       "boundary faces become boundary ids.");
     prm.declare_entry("File",
                       "",
