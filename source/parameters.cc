@@ -42,6 +42,28 @@ namespace hyperelastic
       "written straight into the matrix rows), P2 from FEValues. 'generic': "
       "FEValues for every degree (several times slower for P1; the reference "
       "the kernel is tested against).");
+    prm.declare_entry(
+      "Formulation",
+      "displacement",
+      Selection("displacement|mixed"),
+      "'displacement': the displacement is the only unknown (the default). "
+      "'mixed': displacement and pressure p (the Cauchy mean stress) with "
+      "the volumetric-isochoric split psi = psi_iso(F) + U(J), coupled through "
+      "the Legendre transform of U (exact for any U, see "
+      "doc/manual.md, 'Mixed formulation'): for nearly incompressible "
+      "solids (nu > 0.45), where P1 locks and AMG stalls. Needs a model with "
+      "a split (decoupled neo-Hookean, Mooney-Rivlin); the element is then "
+      "'Mixed element', and 'Finite element degree' is ignored.");
+    prm.declare_entry(
+      "Mixed element",
+      "P1-bubble/P1",
+      Selection("P1-bubble/P1|P1/P1 stabilized|P2/P1"),
+      "The displacement/pressure pair of 'Formulation = mixed': "
+      "'P1-bubble/P1' (MINI: P1 plus a cell bubble, condensed on the cell, "
+      "so the system holds P1 unknowns only), 'P1/P1 stabilized' (equal "
+      "order with Dohrmann-Bochev pressure-projection stabilisation "
+      "-1/mu int (p - Pi0 p)(q - Pi0 q)), 'P2/P1' (Taylor-Hood). All are "
+      "inf-sup stable in 2D and 3D.");
     prm.leave_subsection();
   }
 
@@ -52,6 +74,11 @@ namespace hyperelastic
     dimension = prm.get_integer("Dimension");
     fe_degree = prm.get_integer("Finite element degree");
     fast_p1_assembly = prm.get("Assembly") == "automatic";
+    mixed            = prm.get("Formulation") == "mixed";
+    const std::string element = prm.get("Mixed element");
+    mixed_element = element == "P2/P1"              ? MixedElement::taylor_hood
+                    : element == "P1/P1 stabilized" ? MixedElement::stabilized
+                                                    : MixedElement::mini;
     prm.leave_subsection();
   }
 
@@ -128,6 +155,24 @@ namespace hyperelastic
           reject(c.subsection + "/" + c.kind,
                  size(c.expressions) + " expressions",
                  "needs one expression");
+      }
+    // The mixed formulation needs the model's volumetric split.
+    if (problem.mixed)
+      {
+        if (!material_model(material.model).has_volumetric_split)
+          {
+            std::string with_split;
+            for (const MaterialModel &m : material_models())
+              if (m.has_volumetric_split)
+                with_split += (with_split.empty() ? "'" : ", '") + m.name + "'";
+            reject("Problem/Formulation",
+                   "mixed",
+                   "the " + material.model +
+                     " model has no volumetric-isochoric split psi = "
+                     "psi_iso(F) + U(J); use a model with one (" +
+                     with_split + ") or 'Formulation = displacement'");
+          }
+        problem.fe_degree = displacement_degree(problem.mixed_element);
       }
     // Accepting inverted equilibria needs a model defined at J <= 0.
     if (newton.inverted_elements == InvertedElements::warn)

@@ -5,6 +5,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <hyperelastic/assembly/mixed_assembler.h>
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/mesh.h>
 #include <hyperelastic/output/inverted_cells.h>
@@ -16,6 +17,39 @@
 namespace hyperelastic
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// The scene's element: (P_k)^dim for the displacement formulation,
+    /// (P_k)^dim x P1 for the mixed one (P_k of its 'Mixed element').
+    template <int dim>
+    std::unique_ptr<const FESystem<dim>>
+    make_finite_element(const ProblemParameters &problem)
+    {
+      if (!problem.mixed)
+        return std::make_unique<const FESystem<dim>>(
+          FE_SimplexP<dim>(problem.fe_degree), dim);
+      return std::make_unique<const FESystem<dim>>(
+        FE_SimplexP<dim>(displacement_degree(problem.mixed_element)),
+        dim,
+        FE_SimplexP<dim>(1),
+        1);
+    }
+
+    std::string
+    mixed_element_name(const MixedElement element)
+    {
+      switch (element)
+        {
+          case MixedElement::mini:
+            return "P1-bubble/P1 (MINI, bubble condensed)";
+          case MixedElement::stabilized:
+            return "P1/P1 stabilized";
+          default:
+            return "P2/P1 (Taylor-Hood)";
+        }
+    }
+  } // namespace
 
   template <int dim>
   Problem<dim>::Problem(const Parameters &parameters,
@@ -31,7 +65,8 @@ namespace hyperelastic
               print ? TimerOutput::summary : TimerOutput::never,
               TimerOutput::wall_times)
       , triangulation(comm)
-      , fe(FE_SimplexP<dim>(parameters.problem.fe_degree), dim)
+      , fe_storage(make_finite_element<dim>(parameters.problem))
+      , fe(*fe_storage)
       , mapping(FE_SimplexP<dim>(1))
       , dof_handler(triangulation)
       , linear_solver(parameters.linear_solver)
@@ -61,6 +96,9 @@ namespace hyperelastic
                        "quasi-static problem singular");
 
     dof_handler.distribute_dofs(fe);
+    // Mixed formulation: the dofs are not renumbered by component (each
+    // rank's owned dofs then stay one range; deal.II 9.4's DataOut hung on
+    // two ranks with the split ranges); the blocks are index sets instead.
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
     // Located once; a point outside the mesh is an input error now, not
@@ -108,7 +146,13 @@ namespace hyperelastic
       mapping,
       *material,
       *boundary_conditions,
-      parameters.problem.fast_p1_assembly);
+      parameters.problem.fast_p1_assembly,
+      parameters.problem.mixed ?
+        std::make_unique<MixedAssembler<dim>>(dof_handler,
+                                              mapping,
+                                              *material,
+                                              parameters.problem.mixed_element) :
+        nullptr);
     // A load without a potential makes the tangent non-symmetric.
     linear_solver.set_symmetric(elasticity->is_conservative());
     if (parameters.output.write_vtu)
@@ -148,7 +192,7 @@ namespace hyperelastic
                     {
                       const unsigned int c =
                         fe.face_system_to_component_index(i, f).first;
-                      if (owned_dofs.is_element(face_dofs[i]) &&
+                      if (c < dim && owned_dofs.is_element(face_dofs[i]) &&
                           prescribed[r][c])
                         reaction_dofs[r].emplace_back(face_dofs[i], c);
                     }
@@ -159,9 +203,13 @@ namespace hyperelastic
         dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
       }
 
-    pcout << "hyperelastic: " << dim << "D" << (dim == 2 ? " plane strain" : "")
-          << ", P" << parameters.problem.fe_degree << " simplices, "
-          << triangulation.n_global_active_cells() << " cells, "
+    pcout << "hyperelastic: " << dim << "D" << (dim == 2 ? " plane strain" : "");
+    if (parameters.problem.mixed)
+      pcout << ", mixed u-p " << mixed_element_name(parameters.problem.mixed_element)
+            << " simplices, ";
+    else
+      pcout << ", P" << parameters.problem.fe_degree << " simplices, ";
+    pcout << triangulation.n_global_active_cells() << " cells, "
           << dof_handler.n_dofs() << " unknowns, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n"
           << "material: " << material->name()
@@ -190,7 +238,8 @@ namespace hyperelastic
     // constant volume: when lambda >> mu they lock (far too stiff in
     // bending and shear). Warn; it is not an error.
     const double nu = material->small_strain_moduli().poisson_ratio();
-    if (parameters.problem.fe_degree == 1 && nu > 0.45)
+    if (parameters.problem.fe_degree == 1 && nu > 0.45 &&
+        !parameters.problem.mixed)
       pcout << "warning: Poisson's ratio " << nu
             << " > 0.45 with P1 elements: expect volumetric locking (too "
                "stiff in bending and shear). Use 'Problem/Finite element "
@@ -265,7 +314,9 @@ namespace hyperelastic
   bool
   Problem<dim>::has_potential() const
   {
-    return elasticity->is_conservative();
+    // The mixed functional is a saddle point in the pressure: no minimum to
+    // search along, so the line search tests the residual norm.
+    return elasticity->is_conservative() && !parameters.problem.mixed;
   }
 
   template <int dim>

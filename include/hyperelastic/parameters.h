@@ -5,6 +5,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <hyperelastic/assembly/mixed_assembler.h>
 #include <hyperelastic/loads/loading_parameters.h>
 #include <hyperelastic/materials/material_parameters.h>
 #include <hyperelastic/mesh/mesh_parameters.h>
@@ -26,6 +27,9 @@ namespace hyperelastic
     /// Use the precomputed P1 kernel when the degree is 1 ("Assembly =
     /// automatic"); false: the generic FEValues loops for every degree.
     bool fast_p1_assembly = true;
+    /// "Formulation = mixed": displacement and pressure unknowns.
+    bool         mixed         = false;
+    MixedElement mixed_element = MixedElement::mini;
 
     static void
     declare(ParameterHandler &prm);

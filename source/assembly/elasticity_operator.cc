@@ -16,14 +16,16 @@ namespace hyperelastic
     const Mapping<dim>            &mapping,
     const Material<dim>           &material,
     const BoundaryConditions<dim> &boundary_conditions,
-    const bool                     fast_p1)
+    const bool                     fast_p1,
+    std::unique_ptr<Assembler<dim>> material_part)
       : dof_handler(dof_handler)
-      , generic(std::make_unique<GenericAssembler<dim>>(dof_handler,
-                                                        mapping,
-                                                        material))
+      , generic(material_part ? std::move(material_part) :
+                                std::make_unique<GenericAssembler<dim>>(
+                                  dof_handler, mapping, material))
       , terms(create_load_terms(boundary_conditions, dof_handler, mapping))
   {
-    if (fast_p1 && dof_handler.get_fe().degree == 1)
+    if (fast_p1 && dof_handler.get_fe().degree == 1 &&
+        dof_handler.get_fe().n_components() == dim)
       {
         auto kernel = std::make_unique<P1Assembler<dim>>(dof_handler, material);
         if (kernel->usable())

@@ -125,6 +125,40 @@ namespace hyperelastic
                                               "Loading/Body force");
   }
 
+  namespace
+  {
+    /// A displacement function with zeros appended for the other components
+    /// of the element (the pressure of the mixed formulation).
+    template <int dim>
+    class PaddedFunction : public Function<dim>
+    {
+    public:
+      PaddedFunction(const Function<dim> &displacement,
+                     const unsigned int   n_components)
+          : Function<dim>(n_components)
+          , displacement(displacement)
+      {
+      }
+
+      double
+      value(const Point<dim> &x, const unsigned int c) const override
+      {
+        return c < dim ? displacement.value(x, c) : 0.;
+      }
+
+      void
+      vector_value(const Point<dim> &x, Vector<double> &values) const override
+      {
+        values = 0.;
+        for (unsigned int c = 0; c < dim; ++c)
+          values[c] = displacement.value(x, c);
+      }
+
+    private:
+      const Function<dim> &displacement;
+    };
+  } // namespace
+
   template <int dim>
   void
   BoundaryConditions<dim>::make_constraints(
@@ -144,13 +178,20 @@ namespace hyperelastic
         const auto                               &d = dirichlet[k];
         std::map<types::global_dof_index, double> values;
         d.displacement->set_time(t);
+        // The mixed formulation's pressure component is never prescribed.
+        const unsigned int n_components = dof_handler.get_fe().n_components();
+        const PaddedFunction<dim> padded(*d.displacement, n_components);
+        std::vector<bool>         mask(n_components, false);
+        for (unsigned int c = 0; c < dim; ++c)
+          mask[c] = d.mask[c];
         VectorTools::interpolate_boundary_values(
           mapping,
           dof_handler,
           std::map<types::boundary_id, const Function<dim> *>{
-            {d.id, d.displacement.get()}},
+            {d.id,
+             n_components == dim ? d.displacement.get() : &padded}},
           values,
-          d.mask);
+          ComponentMask(mask));
         for (const auto &[dof, value] : values)
           if (!homogeneous && !std::isfinite(value))
             non_finite[k] = 1;

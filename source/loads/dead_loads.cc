@@ -32,8 +32,12 @@ namespace hyperelastic
             finite = finite && std::isfinite(v);
           const double JxW = values.JxW(q);
           for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
-            cell_forces[i] += value[fe.system_to_component_index(i).first] *
-                              values.shape_value(i, q) * JxW;
+            {
+              // Displacement components only (not a mixed pressure).
+              const unsigned int c = fe.system_to_component_index(i).first;
+              if (c < dim)
+                cell_forces[i] += value[c] * values.shape_value(i, q) * JxW;
+            }
         }
       return finite;
     }

@@ -95,14 +95,20 @@ namespace hyperelastic
         , p(quadrature.size())
     {
       for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
-        component[i] = fe.system_to_component_index(i).first;
+        {
+          component[i] = fe.system_to_component_index(i).first;
+          if (component[i] < dim)
+            displacement.push_back(i);
+        }
     }
 
     FEFaceValues<dim>                    values;
     std::vector<types::global_dof_index> dofs;
     Vector<double>                       u;
     std::vector<unsigned int>            component;
-    std::vector<Tensor<2, dim>>          F;
+    /// The displacement shape functions (all but a mixed pressure's).
+    std::vector<unsigned int>   displacement;
+    std::vector<Tensor<2, dim>> F;
     /// cof(F) N at the quadrature points.
     std::vector<Tensor<1, dim>> cofactor_normal;
     std::vector<double>         p;
@@ -146,7 +152,7 @@ namespace hyperelastic
               for (unsigned int q = 0; q < quadrature.size(); ++q)
                 {
                   Tensor<2, dim> F = unit_symmetric_tensor<dim>();
-                  for (unsigned int i = 0; i < data.u.size(); ++i)
+                  for (const unsigned int i : data.displacement)
                     F[data.component[i]] +=
                       data.u[i] *
                       data.values.shape_grad_component(i, q, data.component[i]);
@@ -173,7 +179,7 @@ namespace hyperelastic
       for (unsigned int q = 0; q < data.p.size(); ++q)
         {
           const double pJxW = data.p[q] * data.values.JxW(q);
-          for (unsigned int i = 0; i < cell_forces.size(); ++i)
+          for (const unsigned int i : data.displacement)
             cell_forces[i] -= pJxW * data.values.shape_value(i, q) *
                               data.cofactor_normal[q][data.component[i]];
         }
@@ -198,13 +204,13 @@ namespace hyperelastic
         {
           const double          pJxW = data.p[q] * data.values.JxW(q);
           const Tensor<1, dim> &N    = data.values.normal_vector(q);
-          for (unsigned int j = 0; j < n; ++j)
+          for (const unsigned int j : data.displacement)
             {
               const Tensor<2, dim> M = cofactor_normal_derivative(
                 data.F[q],
                 N,
                 data.values.shape_grad_component(j, q, data.component[j]));
-              for (unsigned int i = 0; i < n; ++i)
+              for (const unsigned int i : data.displacement)
                 cell_matrix(i, j) += pJxW * data.values.shape_value(i, q) *
                                      M[data.component[i]][data.component[j]];
             }
@@ -222,7 +228,7 @@ namespace hyperelastic
       for (unsigned int q = 0; q < data.p.size(); ++q)
         {
           Tensor<1, dim> x = data.values.quadrature_point(q);
-          for (unsigned int i = 0; i < data.u.size(); ++i)
+          for (const unsigned int i : data.displacement)
             x[data.component[i]] += data.u[i] * data.values.shape_value(i, q);
           sum += data.p[q] / dim * (x * data.cofactor_normal[q]) *
                  data.values.JxW(q);

@@ -67,12 +67,17 @@ namespace hyperelastic
   {
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
-    data_out.add_data_vector(
-      u,
-      std::vector<std::string>(dim, "displacement"),
-      DataOut<dim>::type_dof_data,
-      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-        dim, DataComponentInterpretation::component_is_part_of_vector));
+    // The displacement, and the pressure of the mixed formulation.
+    std::vector<std::string> field_names(dim, "displacement");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    if (dof_handler.get_fe().n_components() > dim)
+      {
+        field_names.emplace_back("pressure");
+        interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+      }
+    data_out.add_data_vector(u, field_names, DataOut<dim>::type_dof_data, interpretation);
     data_out.add_data_vector(fields.J, "J", DataOut<dim>::type_cell_data);
     data_out.add_data_vector(fields.energy_density,
                              "energy_density",

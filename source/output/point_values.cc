@@ -139,8 +139,12 @@ namespace hyperelastic
       {
         location.cell->get_dof_indices(dof_indices);
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-          sums[location.point * dim + fe.system_to_component_index(i).first] +=
-            u(dof_indices[i]) * location.shape_values[i];
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            if (c < dim) // not a mixed pressure
+              sums[location.point * dim + c] +=
+                u(dof_indices[i]) * location.shape_values[i];
+          }
       }
     Utilities::MPI::sum(sums, comm, sums);
 

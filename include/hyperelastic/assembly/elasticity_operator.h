@@ -28,11 +28,14 @@ namespace hyperelastic
     /// P1 kernel; otherwise, and for P2, from the generic FEValues loops.
     /// The load terms are made from @p boundary_conditions
     /// (create_load_terms()), which must outlive the operator.
-    ElasticityOperator(const dealii::DoFHandler<dim> &dof_handler,
-                       const dealii::Mapping<dim>    &mapping,
-                       const Material<dim>           &material,
-                       const BoundaryConditions<dim> &boundary_conditions,
-                       bool                           fast_p1 = true);
+    /// A non-null @p material_part (the mixed formulation's) replaces both.
+    ElasticityOperator(
+      const dealii::DoFHandler<dim>  &dof_handler,
+      const dealii::Mapping<dim>     &mapping,
+      const Material<dim>            &material,
+      const BoundaryConditions<dim>  &boundary_conditions,
+      bool                            fast_p1       = true,
+      std::unique_ptr<Assembler<dim>> material_part = nullptr);
     ~ElasticityOperator();
 
     /// Whether the P1 kernel is in use.

@@ -32,6 +32,7 @@
 #pragma once
 
 #include <hyperelastic/materials/material.h>
+#include <hyperelastic/materials/volumetric_split.h>
 
 #include <cmath>
 #include <limits>
@@ -140,6 +141,17 @@ namespace hyperelastic
     defined_for_inverted_elements() const override
     {
       return false;
+    }
+
+    /// Isochoric part: this model with kappa = 0 (lambda = -2 mu / 3).
+    std::unique_ptr<VolumetricSplit<dim>>
+    volumetric_split() const override
+    {
+      LameParameters isochoric = this->lame;
+      isochoric.lambda         = -2. / 3. * isochoric.mu;
+      return std::make_unique<VolumetricSplit<dim>>(VolumetricSplit<dim>{
+        std::make_unique<DecoupledNeoHookean<dim>>(isochoric),
+        LogVolumetricEnergy(kappa)});
     }
 
   private:

@@ -34,6 +34,9 @@ namespace hyperelastic
     poisson_ratio() const;
   };
 
+  template <int dim>
+  struct VolumetricSplit;
+
   /// dP/dF stored as A[i][J][k][L] = d P_iJ / d F_kL.
   template <int dim>
   using StressTangent = Tensor<4, dim>;
@@ -94,6 +97,15 @@ namespace hyperelastic
     /// which gives the out-of-plane stress; for dim = 3 a copy.
     virtual std::unique_ptr<Material<3>>
     three_dimensional_twin() const = 0;
+
+    /// The model's volumetric-isochoric split psi = psi_iso(F) + U(J)
+    /// (materials/volumetric_split.h), for the mixed displacement-pressure
+    /// formulation; null for a model without one.
+    virtual std::unique_ptr<VolumetricSplit<dim>>
+    volumetric_split() const
+    {
+      return nullptr;
+    }
 
   protected:
     /// A tensor of NaNs: P (and each block of dP/dF) where a model is

@@ -97,6 +97,9 @@ namespace hyperelastic
     /// (E and nu, Lame, or shear and bulk modulus); otherwise the model has
     /// entries of its own in the subsection Material/<name>.
     bool uses_elastic_constants = true;
+    /// Whether the model splits into psi_iso(F) + U(J) (needed by the
+    /// mixed displacement-pressure formulation).
+    bool has_volumetric_split = false;
 
     /// Declares the model's own entries; the handler is inside the
     /// subsection Material/<name>. Empty for Lame-based models.
@@ -156,6 +159,7 @@ namespace hyperelastic
       model.is_linear = instance.is_linear();
       model.defined_for_inverted_elements =
         instance.defined_for_inverted_elements();
+      model.has_volumetric_split = instance.volumetric_split() != nullptr;
     }
     if constexpr (std::is_same_v<Constants, LameParameters>)
       {

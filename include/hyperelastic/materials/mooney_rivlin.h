@@ -56,6 +56,7 @@
 
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/materials/material.h>
+#include <hyperelastic/materials/volumetric_split.h>
 
 #include <cmath>
 #include <iomanip>
@@ -219,6 +220,17 @@ namespace hyperelastic
     three_dimensional_twin() const override
     {
       return std::make_unique<MooneyRivlin<3>>(constants);
+    }
+
+    /// Isochoric part: this model with kappa = 0.
+    std::unique_ptr<VolumetricSplit<dim>>
+    volumetric_split() const override
+    {
+      MooneyRivlinConstants isochoric = constants;
+      isochoric.kappa                 = 0.;
+      return std::make_unique<VolumetricSplit<dim>>(
+        VolumetricSplit<dim>{std::make_unique<MooneyRivlin<dim>>(isochoric),
+                             LogVolumetricEnergy(constants.kappa)});
     }
 
     double

@@ -1,0 +1,106 @@
+// The material part of the displacement-pressure (mixed) formulation
+// (materials/volumetric_split.h):
+//   Pi(u, p) = int psi_iso(F) + p (J - 1) - U*(p) dV [- stabilisation],
+//   R_u = int (P_iso + p J F^-T) : grad du dV,
+//   R_p = int (J - J*(p)) dp dV            (J*(p) - 1 = U*'(p)),
+// with its exact tangent (symmetric, a saddle point):
+//   K_uu = int grad du : (A_iso + p J (G (x) G - G [x] G)) : grad Du,
+//   K_up = int J G : grad du Dp,   K_pp = -int U*''(p) dp Dp,
+// G = F^-T, (G [x] G)_iJkL = G_iL G_kJ. The unknowns are one vector over a
+// DoFHandler of dim displacement components and one pressure component.
+//
+// Elements (Problem/Mixed element):
+//  - P1-bubble/P1 (MINI): P1 displacement enriched by a cell bubble
+//    b = 27 l1 l2 l3 (2D), 256 l1 l2 l3 l4 (3D) per component. The bubble
+//    couples only within its cell: its equations R_b = 0 are solved on the
+//    cell (a small Newton iteration) for every state, and the cell's system
+//    is condensed, K* = K_rr - K_rb K_bb^-1 K_br, which is the exact tangent
+//    of the reduced residual (implicit function theorem). The global system
+//    holds P1 u and P1 p only.
+//  - P1/P1 stabilised (Dohrmann-Bochev 2004): equal-order P1 with
+//    -1/mu int (p - Pi0 p)(q - Pi0 q) dV added to the p-p block (Pi0: cell
+//    mean), i.e. -1/(2 mu) int (p - Pi0 p)^2 dV added to Pi.
+//  - P2/P1 (Taylor-Hood).
+#pragma once
+
+#include <deal.II/base/quadrature.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+
+#include <hyperelastic/assembly/assembler.h>
+#include <hyperelastic/materials/volumetric_split.h>
+
+#include <memory>
+
+namespace hyperelastic
+{
+  enum class MixedElement
+  {
+    mini,        ///< P1-bubble/P1, bubble condensed per cell
+    stabilized,  ///< P1/P1 with pressure-projection stabilisation
+    taylor_hood, ///< P2/P1
+  };
+
+  /// The displacement degree of @p element (2 for Taylor-Hood, else 1).
+  unsigned int
+  displacement_degree(MixedElement element);
+
+  template <int dim>
+  class MixedAssembler : public Assembler<dim>
+  {
+  public:
+    /// @p material must have a volumetric split (checked when the scene is
+    /// read); the DoFHandler's element is (P_k)^dim x P1.
+    MixedAssembler(const dealii::DoFHandler<dim> &dof_handler,
+                   const dealii::Mapping<dim>    &mapping,
+                   const Material<dim>           &material,
+                   MixedElement                   element);
+    ~MixedAssembler();
+
+    /// [R_u; R_p] (owned rows). Non-finite entries where a cell has J <= 0.
+    double
+    internal_forces(const VectorType &u, VectorType &internal) const override;
+
+    bool
+    system(const VectorType                        &u,
+           const dealii::AffineConstraints<double> &constraints,
+           bool                                     project_tangent,
+           MatrixType                              &matrix,
+           VectorType                              &rhs) const override;
+
+    /// Pi(u, p) without external work (a saddle value, not a minimum) and the
+    /// smallest J.
+    EnergyEvaluation
+    stored_energy(const VectorType &u, bool with_energy) const override;
+
+  private:
+    struct CellData;
+    struct CellResult;
+
+    /// Calls @p worker for every owned cell with its data, the bubble solved
+    /// (MINI) and the residual, and the matrix if @p with_matrix.
+    template <typename Worker>
+    void
+    for_each_cell(const VectorType &u,
+                  bool              with_matrix,
+                  bool              project_tangent,
+                  Worker          &&worker) const;
+
+    /// The cell's residual (and matrix) at its current values and bubble.
+    void
+    evaluate_cell(CellData &data, bool with_matrix, bool project_tangent) const;
+
+    /// MINI: solve the cell's bubble equations, then condense.
+    void
+    solve_bubble(CellData &data, bool with_matrix, bool project_tangent) const;
+
+    const dealii::DoFHandler<dim>        &dof_handler;
+    const dealii::Mapping<dim>           &mapping;
+    const Material<dim>                  &material;
+    std::unique_ptr<VolumetricSplit<dim>> split;
+    const MixedElement                    element;
+    const dealii::Quadrature<dim>         quadrature;
+    /// 1/mu of the stabilisation (P1/P1).
+    const double inverse_shear_modulus;
+  };
+} // namespace hyperelastic

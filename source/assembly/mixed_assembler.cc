@@ -1,0 +1,469 @@
+// The FEValues loops of the displacement-pressure formulation, with the MINI
+// bubble solved and condensed per cell.
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <hyperelastic/assembly/mixed_assembler.h>
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/materials/tangent_projection.h>
+
+#include <cmath>
+#include <limits>
+
+namespace hyperelastic
+{
+  using namespace dealii;
+
+  unsigned int
+  displacement_degree(const MixedElement element)
+  {
+    return element == MixedElement::taylor_hood ? 2 : 1;
+  }
+
+  namespace
+  {
+    /// Quadrature exact for the products the element integrates at F = I
+    /// (MINI: bubble gradients squared).
+    unsigned int
+    quadrature_points_1d(const MixedElement element)
+    {
+      return element == MixedElement::stabilized ? 2 : 3;
+    }
+  } // namespace
+
+  /// A cell's values, shape data and local system. Local unknowns: the
+  /// element's dofs (0 .. n-1), then for MINI the dim bubble coefficients.
+  template <int dim>
+  struct MixedAssembler<dim>::CellData
+  {
+    CellData(const Mapping<dim>       &mapping,
+             const FiniteElement<dim> &fe,
+             const Quadrature<dim>    &quadrature,
+             const unsigned int        n_bubble)
+        : values(mapping,
+                 fe,
+                 quadrature,
+                 update_values | update_gradients | update_JxW_values)
+        , n(fe.dofs_per_cell)
+        , n_bubble(n_bubble)
+        , dofs(n)
+        , x(n)
+        , bubble(n_bubble)
+        , component(n)
+        , grad(quadrature.size(), std::vector<Tensor<1, dim>>(n + n_bubble))
+        , psi(quadrature.size(), std::vector<double>(n, 0.))
+        , residual(n + n_bubble)
+        , matrix(n + n_bubble, n + n_bubble)
+    {
+      for (unsigned int i = 0; i < n; ++i)
+        component[i] = fe.system_to_component_index(i).first;
+      for (unsigned int b = 0; b < n_bubble; ++b)
+        component.push_back(b);
+    }
+
+    /// Fills the shape gradients (u unknowns, bubble included) and the
+    /// pressure shape values of the cell.
+    void
+    reinit(const typename DoFHandler<dim>::active_cell_iterator &cell)
+    {
+      values.reinit(cell);
+      cell->get_dof_indices(dofs);
+      diameter = cell->diameter();
+      for (unsigned int q = 0; q < grad.size(); ++q)
+        {
+          for (unsigned int i = 0; i < n; ++i)
+            if (component[i] < dim)
+              grad[q][i] = values.shape_grad_component(i, q, component[i]);
+            else
+              psi[q][i] = values.shape_value_component(i, q, dim);
+          if (n_bubble == 0)
+            continue;
+          // The pressure shape functions of P1 are the barycentric
+          // coordinates l_k: b = c prod l_k, grad b = c sum_k grad l_k
+          // prod_{m != k} l_m.
+          const double   c = dim == 2 ? 27. : 256.;
+          Tensor<1, dim> grad_b;
+          for (unsigned int k = 0; k < n; ++k)
+            if (component[k] == dim)
+              {
+                double product = c;
+                for (unsigned int m = 0; m < n; ++m)
+                  if (component[m] == dim && m != k)
+                    product *= psi[q][m];
+                grad_b += product * values.shape_grad_component(k, q, dim);
+              }
+          for (unsigned int b = 0; b < n_bubble; ++b)
+            grad[q][n + b] = grad_b;
+        }
+    }
+
+    FEValues<dim>                        values;
+    const unsigned int                   n;
+    const unsigned int                   n_bubble;
+    std::vector<types::global_dof_index> dofs;
+    Vector<double>                       x;
+    Vector<double>                       bubble;
+    std::vector<unsigned int>            component;
+    /// [q][i]: gradient of the only nonzero component of u unknown i.
+    std::vector<std::vector<Tensor<1, dim>>> grad;
+    /// [q][i]: value of pressure shape function i (0 for u unknowns).
+    std::vector<std::vector<double>> psi;
+    double                           diameter = 0.;
+
+    // Results of evaluate_cell().
+    Vector<double>     residual;
+    FullMatrix<double> matrix;
+    double             energy    = 0.;
+    double             min_J     = std::numeric_limits<double>::infinity();
+    double             force_sum = 0.; ///< for the round-off estimate
+  };
+
+  template <int dim>
+  MixedAssembler<dim>::MixedAssembler(const DoFHandler<dim> &dof_handler,
+                                      const Mapping<dim>    &mapping,
+                                      const Material<dim>   &material,
+                                      const MixedElement     element)
+      : dof_handler(dof_handler)
+      , mapping(mapping)
+      , material(material)
+      , split(material.volumetric_split())
+      , element(element)
+      , quadrature(QGaussSimplex<dim>(quadrature_points_1d(element)))
+      , inverse_shear_modulus(1. / material.small_strain_moduli().mu)
+  {
+    AssertThrow(split != nullptr,
+                ExcMessage("the mixed formulation needs a model with a "
+                           "volumetric-isochoric split"));
+    AssertThrow(dof_handler.get_fe().n_components() == dim + 1,
+                ExcMessage("the mixed formulation needs dim + 1 components"));
+  }
+
+  template <int dim>
+  MixedAssembler<dim>::~MixedAssembler() = default;
+
+  template <int dim>
+  void
+  MixedAssembler<dim>::evaluate_cell(CellData  &data,
+                                     const bool with_matrix,
+                                     const bool project_tangent) const
+  {
+    const unsigned int   n_total = data.n + data.n_bubble;
+    const Material<dim> &iso     = *split->isochoric;
+    const auto          &vol     = split->volumetric;
+    data.residual                = 0.;
+    if (with_matrix)
+      data.matrix = 0.;
+    data.energy    = 0.;
+    data.min_J     = std::numeric_limits<double>::infinity();
+    data.force_sum = 0.;
+
+    Tensor<2, dim>     P;
+    StressTangent<dim> A;
+    double             volume = 0., p_mean = 0.;
+    std::vector<double> p_q(quadrature.size());
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
+      {
+        const auto    &grad = data.grad[q];
+        const auto    &psi  = data.psi[q];
+        Tensor<2, dim> F    = unit_symmetric_tensor<dim>();
+        double         p    = 0.;
+        for (unsigned int i = 0; i < data.n; ++i)
+          if (data.component[i] < dim)
+            F[data.component[i]] += data.x[i] * grad[i];
+          else
+            p += data.x[i] * psi[i];
+        for (unsigned int b = 0; b < data.n_bubble; ++b)
+          F[b] += data.bubble[b] * grad[data.n + b];
+        p_q[q]           = p;
+        const double JxW = data.values.JxW(q);
+        volume += JxW;
+        p_mean += p * JxW;
+
+        const double J = determinant(F);
+        data.min_J     = std::min(data.min_J, J);
+        if (!(J > 0.))
+          {
+            // Outside the model's domain: no finite residual.
+            for (auto &r : data.residual)
+              r = std::numeric_limits<double>::quiet_NaN();
+            data.energy   = std::numeric_limits<double>::infinity();
+            return;
+          }
+        const Tensor<2, dim> JG = J * transpose(invert(F));
+        if (with_matrix)
+          {
+            iso.stress_and_tangent(F, P, A);
+            if (!stress_and_tangent_finite(P, A))
+              throw std::domain_error(non_finite_stress_message());
+            if (project_tangent)
+              project_to_positive_semidefinite(A);
+            // p d(J G)/dF = p/J (JG (x) JG - JG [x] JG).
+            const double pJ = p / J;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int I = 0; I < dim; ++I)
+                for (unsigned int k = 0; k < dim; ++k)
+                  for (unsigned int L = 0; L < dim; ++L)
+                    A[i][I][k][L] +=
+                      pJ * (JG[i][I] * JG[k][L] - JG[i][L] * JG[k][I]);
+          }
+        else
+          P = iso.first_piola_kirchhoff(F);
+        data.energy +=
+          (iso.energy_density(F) + p * (J - 1.) - vol.conjugate(p)) * JxW;
+        P += p * JG;
+
+        const double volumetric_residual = J - vol.conjugate_J(p);
+        const double pressure_stiffness  = -vol.conjugate_second_derivative(p);
+        for (unsigned int i = 0; i < n_total; ++i)
+          {
+            const unsigned int ci = data.component[i];
+            if (i < data.n && ci == dim)
+              {
+                data.residual[i] += volumetric_residual * psi[i] * JxW;
+                if (with_matrix)
+                  for (unsigned int j = 0; j < data.n; ++j)
+                    if (data.component[j] == dim)
+                      data.matrix(i, j) +=
+                        pressure_stiffness * psi[i] * psi[j] * JxW;
+                continue;
+              }
+            data.residual[i] += (P[ci] * grad[i]) * JxW;
+            data.force_sum += grad[i].norm() * JxW;
+            if (!with_matrix)
+              continue;
+            const double coupling = (JG[ci] * grad[i]) * JxW;
+            for (unsigned int j = 0; j < n_total; ++j)
+              {
+                const unsigned int cj = data.component[j];
+                if (j < data.n && cj == dim)
+                  {
+                    data.matrix(i, j) += coupling * psi[j];
+                    data.matrix(j, i) += coupling * psi[j];
+                    continue;
+                  }
+                double k = 0.;
+                for (unsigned int I = 0; I < dim; ++I)
+                  k += grad[i][I] * (A[ci][I][cj] * grad[j]);
+                data.matrix(i, j) += k * JxW;
+              }
+          }
+      }
+
+    if (element != MixedElement::stabilized)
+      return;
+    // -1/(2 mu) int (p - pbar)^2: residual -1/mu int (p - pbar) q, matrix
+    // -1/mu (int psi_i psi_j - |T| psibar_i psibar_j).
+    p_mean /= volume;
+    std::vector<double> psi_mean(data.n, 0.);
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
+      {
+        const double JxW = data.values.JxW(q);
+        const double d   = p_q[q] - p_mean;
+        data.energy -= 0.5 * inverse_shear_modulus * d * d * JxW;
+        for (unsigned int i = 0; i < data.n; ++i)
+          if (data.component[i] == dim)
+            {
+              data.residual[i] -=
+                inverse_shear_modulus * d * data.psi[q][i] * JxW;
+              psi_mean[i] += data.psi[q][i] * JxW / volume;
+              if (with_matrix)
+                for (unsigned int j = 0; j < data.n; ++j)
+                  if (data.component[j] == dim)
+                    data.matrix(i, j) -= inverse_shear_modulus *
+                                         data.psi[q][i] * data.psi[q][j] * JxW;
+            }
+      }
+    if (with_matrix)
+      for (unsigned int i = 0; i < data.n; ++i)
+        for (unsigned int j = 0; j < data.n; ++j)
+          if (data.component[i] == dim && data.component[j] == dim)
+            data.matrix(i, j) +=
+              inverse_shear_modulus * volume * psi_mean[i] * psi_mean[j];
+  }
+
+  template <int dim>
+  void
+  MixedAssembler<dim>::solve_bubble(CellData  &data,
+                                    const bool with_matrix,
+                                    const bool project_tangent) const
+  {
+    const unsigned int n = data.n, nb = data.n_bubble;
+    FullMatrix<double> K_bb(nb, nb), K_bb_inverse(nb, nb);
+    data.bubble = 0.;
+    // Newton on R_b(bubble) = 0 with the cell's other unknowns fixed; the
+    // bubble's equations are those of a stiff small-strain problem, so a
+    // few iterations reach round-off.
+    constexpr unsigned int max_iterations = 30;
+    for (unsigned int it = 0;; ++it)
+      {
+        evaluate_cell(data, true, project_tangent);
+        if (!(data.min_J > 0.))
+          return; // inadmissible: residual is NaN
+        for (unsigned int a = 0; a < nb; ++a)
+          for (unsigned int b = 0; b < nb; ++b)
+            K_bb(a, b) = data.matrix(n + a, n + b);
+        K_bb_inverse.invert(K_bb);
+        double step = 0.;
+        for (unsigned int a = 0; a < nb; ++a)
+          {
+            double d = 0.;
+            for (unsigned int b = 0; b < nb; ++b)
+              d -= K_bb_inverse(a, b) * data.residual[n + b];
+            data.bubble[a] += d;
+            step = std::max(step, std::abs(d));
+          }
+        if (step <= 1e-14 * data.diameter || it + 1 == max_iterations)
+          {
+            if (step > 1e-10 * data.diameter)
+              throw std::domain_error("the cell's bubble equations did not "
+                                      "converge");
+            break;
+          }
+      }
+    evaluate_cell(data, true, project_tangent);
+    if (!(data.min_J > 0.))
+      return;
+    for (unsigned int a = 0; a < nb; ++a)
+      for (unsigned int b = 0; b < nb; ++b)
+        K_bb(a, b) = data.matrix(n + a, n + b);
+    K_bb_inverse.invert(K_bb);
+    // Condense: R* = R_r - K_rb K_bb^-1 R_b, K* = K_rr - K_rb K_bb^-1 K_br.
+    std::vector<double> S_R(nb, 0.);
+    for (unsigned int a = 0; a < nb; ++a)
+      for (unsigned int b = 0; b < nb; ++b)
+        S_R[a] += K_bb_inverse(a, b) * data.residual[n + b];
+    FullMatrix<double> S_K(nb, n);
+    for (unsigned int a = 0; a < nb; ++a)
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int b = 0; b < nb; ++b)
+          S_K(a, j) += K_bb_inverse(a, b) * data.matrix(n + b, j);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int a = 0; a < nb; ++a)
+        {
+          const double K_ia = data.matrix(i, n + a);
+          data.residual[i] -= K_ia * S_R[a];
+          if (with_matrix)
+            for (unsigned int j = 0; j < n; ++j)
+              data.matrix(i, j) -= K_ia * S_K(a, j);
+        }
+  }
+
+  template <int dim>
+  template <typename Worker>
+  void
+  MixedAssembler<dim>::for_each_cell(const VectorType &u,
+                                     const bool        with_matrix,
+                                     const bool        project_tangent,
+                                     Worker          &&worker) const
+  {
+    const unsigned int n_bubble = element == MixedElement::mini ? dim : 0;
+    CellData    data(mapping, dof_handler.get_fe(), quadrature, n_bubble);
+    std::string error;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          try
+            {
+              data.reinit(cell);
+              cell->get_dof_values(u, data.x);
+              if (n_bubble > 0)
+                solve_bubble(data, with_matrix, project_tangent);
+              else
+                evaluate_cell(data, with_matrix, project_tangent);
+              worker(data);
+            }
+          catch (const std::exception &e)
+            {
+              error = cell_failure_text(cell->active_cell_index(),
+                                        cell->center(),
+                                        exception_message(e));
+              break;
+            }
+        }
+    throw_convergence_failure_if_any(error, dof_handler.get_communicator());
+  }
+
+  template <int dim>
+  double
+  MixedAssembler<dim>::internal_forces(const VectorType &u,
+                                       VectorType       &internal) const
+  {
+    internal = 0.;
+    const double modulus = material.small_strain_moduli().mu;
+    double       squared = 0.;
+    Vector<double> cell_residual(dof_handler.get_fe().dofs_per_cell);
+    for_each_cell(u, false, false, [&](CellData &data) {
+      for (unsigned int i = 0; i < data.n; ++i)
+        cell_residual[i] = data.residual[i];
+      internal.add(data.dofs, cell_residual);
+      // Round-off: stress entries carry about eps (mu + |p|) each.
+      double p_max = 0.;
+      for (unsigned int i = 0; i < data.n; ++i)
+        if (data.component[i] == dim)
+          p_max = std::max(p_max, std::abs(data.x[i]));
+      const double cell = (modulus + p_max) * data.force_sum;
+      squared += cell * cell;
+    });
+    internal.compress(VectorOperation::add);
+    return std::numeric_limits<double>::epsilon() *
+           std::sqrt(Utilities::MPI::sum(squared, dof_handler.get_communicator()));
+  }
+
+  template <int dim>
+  bool
+  MixedAssembler<dim>::system(const VectorType                &u,
+                              const AffineConstraints<double> &constraints,
+                              const bool  project_tangent,
+                              MatrixType &matrix,
+                              VectorType &rhs) const
+  {
+    matrix                = 0.;
+    rhs                   = 0.;
+    const unsigned int  n = dof_handler.get_fe().dofs_per_cell;
+    FullMatrix<double>  cell_matrix(n, n);
+    Vector<double>      cell_rhs(n);
+    for_each_cell(u, true, project_tangent, [&](CellData &data) {
+      if (!(data.min_J > 0.))
+        throw std::domain_error(non_finite_stress_message());
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          cell_rhs[i] = -data.residual[i];
+          for (unsigned int j = 0; j < n; ++j)
+            cell_matrix(i, j) = data.matrix(i, j);
+        }
+      constraints.distribute_local_to_global(
+        cell_matrix, cell_rhs, data.dofs, matrix, rhs, true);
+    });
+    matrix.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
+    return true;
+  }
+
+  template <int dim>
+  EnergyEvaluation
+  MixedAssembler<dim>::stored_energy(const VectorType &u,
+                                     const bool        with_energy) const
+  {
+    double energy = 0., magnitude = 0.;
+    double min_J  = std::numeric_limits<double>::infinity();
+    for_each_cell(u, false, false, [&](CellData &data) {
+      min_J = std::min(min_J, data.min_J);
+      energy += data.energy;
+      magnitude += std::abs(data.energy);
+    });
+    const MPI_Comm   comm = dof_handler.get_communicator();
+    EnergyEvaluation result;
+    result.min_J = Utilities::MPI::min(min_J, comm);
+    if (with_energy)
+      {
+        result.energy = Utilities::MPI::sum(energy, comm);
+        result.noise  = 1e-13 * Utilities::MPI::sum(magnitude, comm);
+      }
+    return result;
+  }
+
+  template class MixedAssembler<2>;
+  template class MixedAssembler<3>;
+} // namespace hyperelastic
