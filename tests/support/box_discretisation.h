@@ -30,11 +30,12 @@ namespace hyperelastic::testing
                       const unsigned int cells_along,
                       const unsigned int cells_across,
                       const unsigned int degree,
-                      const MPI_Comm     comm)
+                      const MPI_Comm     comm,
+                      const bool         with_pressure = false)
         : comm(comm)
         , tria(comm)
         , boundary_ids(create_mesh(box(length, cells_along, cells_across), tria))
-        , fe(dealii::FE_SimplexP<dim>(degree), dim)
+        , fe(finite_element(degree, with_pressure))
         , mapping(dealii::FE_SimplexP<dim>(1))
         , dof_handler(tria)
     {
@@ -62,6 +63,16 @@ namespace hyperelastic::testing
     dealii::IndexSet                                       owned, relevant;
 
   private:
+    /// (P_degree)^dim, with a P1 pressure after it for the mixed formulation.
+    static dealii::FESystem<dim>
+    finite_element(const unsigned int degree, const bool with_pressure)
+    {
+      if (with_pressure)
+        return dealii::FESystem<dim>(dealii::FE_SimplexP<dim>(degree), dim,
+                                     dealii::FE_SimplexP<dim>(1), 1);
+      return dealii::FESystem<dim>(dealii::FE_SimplexP<dim>(degree), dim);
+    }
+
     static MeshParameters
     box(const double length, const unsigned int cells_along, const unsigned int cells_across)
     {

@@ -1,0 +1,234 @@
+// The mixed displacement-pressure formulation (issue 14), on the ranks of
+// MPI_COMM_WORLD, for every mixed element (P1-bubble/P1, P1/P1 stabilized,
+// P2/P1) in dimension DIM:
+//   1. homogeneous uniaxial stretch 1.5 and compression 0.7 of the bar
+//      [0, 2] x [0, 1] (x [0, 1]) on symmetry rollers, nu = 0.4999, decoupled
+//      neo-Hookean and Mooney-Rivlin: every element reproduces the exact
+//      solution, so the lateral stretch, the end reaction (= P11, end face of
+//      unit area) and every pressure unknown (p = U'(J) = kappa/2 (J - 1/J))
+//      must equal the analytic values (tests/support/analytic_bar.h, lateral
+//      equilibrium by bisection) to 1e-8;
+//   2. the assembled saddle-point tangent (u-u, u-p, p-u, p-p blocks; MINI
+//      with its bubble condensed) against central differences of the
+//      assembled residual at a random state, relative error < 1e-6, and its
+//      symmetry (1e-10).
+//
+// Usage: mpirun -np N mixed_formulation DIM
+#include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/assembly/mixed_assembler.h>
+#include <hyperelastic/problem.h>
+
+#include "support/analytic_bar.h"
+#include "support/box_discretisation.h"
+#include "support/dimension_main.h"
+#include "support/random_vector.h"
+#include "support/scene_text.h"
+
+#include <cmath>
+
+using namespace hyperelastic;
+using namespace hyperelastic::testing;
+using namespace dealii;
+
+namespace
+{
+  constexpr double mu = 1., nu = 0.4999;
+  const double     lambda = 2. * mu * nu / (1. - 2. * nu);
+
+  const std::vector<std::pair<MixedElement, std::string>> elements = {
+    {MixedElement::mini, "P1-bubble/P1"},
+    {MixedElement::stabilized, "P1/P1 stabilized"},
+    {MixedElement::taylor_hood, "P2/P1"}};
+
+  std::string
+  bar_scene(const int          dim,
+            const std::string &element,
+            const std::string &model,
+            const double       stretch)
+  {
+    const bool three = dim == 3;
+    return subsection("Problem",
+                      entry("Dimension", std::to_string(dim)) +
+                        entry("Formulation", "mixed") +
+                        entry("Mixed element", element)) +
+           subsection("Mesh",
+                      entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
+                        entry("Upper corner", three ? "2, 1, 1" : "2, 1") +
+                        entry("Subdivisions", three ? "3, 2, 2" : "4, 2")) +
+           material_section(model,
+                            entry("Elastic constants", "Lame") +
+                              entry("Shear modulus", "1") +
+                              entry("Lame lambda", std::to_string(lambda)),
+                            lame_parameters(mu, lambda)) +
+           subsection("Loading", entry("Number of load steps", "3")) +
+           dirichlet(1, 0, "x", "0") + dirichlet(2, 2, "y", "0") +
+           (three ? dirichlet(3, 4, "z", "0") : std::string()) +
+           dirichlet(4, 1, "x", std::to_string(2. * (stretch - 1.)) + "*t") +
+           subsection("Newton",
+                      entry("Relative residual tolerance", "1e-13") +
+                        entry("Update tolerance", "1e-12")) +
+           subsection("Linear solver", entry("Type", "direct")) +
+           subsection("Output",
+                      entry("Directory", "mixed_formulation_output") +
+                        entry("Write VTU", "false") +
+                        entry("Verbose", "false"));
+  }
+
+  /// Largest |p - p_exact| over the pressure unknowns.
+  template <int dim>
+  double
+  pressure_error(const Problem<dim> &problem, const double p_exact)
+  {
+    const auto &dof_handler = problem.get_dof_handler();
+    const auto &fe          = dof_handler.get_fe();
+    std::vector<types::global_dof_index> dofs(fe.dofs_per_cell);
+    double                               worst = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (fe.system_to_component_index(i).first == dim)
+              worst = std::max(worst,
+                               std::abs(problem.solution()(dofs[i]) - p_exact));
+        }
+    return Utilities::MPI::max(worst, MPI_COMM_WORLD);
+  }
+
+  template <int dim>
+  void
+  check_homogeneous(Checker &checker)
+  {
+    const double kappa = lambda + 2. / 3. * mu;
+    for (const auto &[element, element_name] : elements)
+      for (const std::string model : {"decoupled neo-Hookean", "Mooney-Rivlin"})
+        for (const double stretch : {1.5, 0.7})
+          {
+            Parameters parameters;
+            parameters.read_from_string(
+              bar_scene(dim, element_name, model, stretch));
+            Problem<dim> problem(parameters, MPI_COMM_WORLD, false);
+            problem.run();
+            const auto &last = problem.summaries().back();
+            // Mooney-Rivlin from (mu, lambda): c1 = 3 mu / 8, c2 = mu / 8.
+            const bool         mr = model == "Mooney-Rivlin";
+            const UniaxialState exact =
+              uniaxial_mooney_rivlin(dim,
+                                     stretch,
+                                     mr ? 3. / 8. * mu : 0.5 * mu,
+                                     mr ? 1. / 8. * mu : 0.,
+                                     kappa);
+            const double J = stretch * exact.l2 * (dim == 3 ? exact.l2 : 1.);
+            const double p = 0.5 * kappa * (J - 1. / J);
+            const std::string tag = std::to_string(dim) + "D " + element_name +
+                                    " " + model + " stretch " +
+                                    std::to_string(stretch) + ": ";
+            checker.close(tag + "lateral stretch",
+                          last.deformed_max[1],
+                          exact.l2,
+                          1.,
+                          1e-8);
+            double reaction = 0.;
+            for (const auto &[id, force] : last.reactions)
+              if (id == 1)
+                reaction = force[0];
+            checker.close(tag + "end reaction = P11",
+                          reaction,
+                          exact.P11,
+                          std::abs(exact.P11),
+                          1e-8);
+            checker.at_most(tag + "|p - kappa/2 (J - 1/J)| / |p|",
+                            pressure_error(problem, p) / std::abs(p),
+                            1e-8);
+          }
+  }
+
+  template <int dim>
+  void
+  check_tangent(Checker &checker)
+  {
+    for (const auto &[element, element_name] : elements)
+      for (const std::string model : {"decoupled neo-Hookean", "Mooney-Rivlin"})
+        {
+          const BoxDiscretisation<dim> box(2.,
+                                           2,
+                                           2,
+                                           displacement_degree(element),
+                                           MPI_COMM_WORLD,
+                                           true);
+          // A moderately compressible material: the p-p block matters.
+          const auto material =
+            create_material<dim>(model, lame_parameters(1., 20.));
+          LoadingParameters             no_loads;
+          const BoundaryConditions<dim> bc(no_loads, box.boundary_ids);
+          const ElasticityOperator<dim> op(
+            box.dof_handler,
+            box.mapping,
+            *material,
+            bc,
+            false,
+            std::make_unique<MixedAssembler<dim>>(box.dof_handler,
+                                                  box.mapping,
+                                                  *material,
+                                                  element));
+          const auto ghosted = [&](const VectorType &v) {
+            VectorType g(box.owned, box.relevant, box.comm);
+            g = v;
+            return g;
+          };
+          const auto residual = [&](const VectorType &x) {
+            VectorType internal(box.owned, box.comm), external(internal);
+            op.assemble_forces(ghosted(x), 0., internal, external);
+            internal -= external;
+            return internal;
+          };
+          MatrixType K;
+          box.reinit_matrix(K);
+          AffineConstraints<double> none(box.relevant);
+          none.close();
+          VectorType x(box.owned, box.comm), rhs(x);
+          fill_random(x, 0.05, 3); // u and p of size 0.05 (p in units of mu)
+          op.assemble_system(ghosted(x), 0., none, K, rhs);
+
+          double worst = 0., asymmetry = 0.;
+          for (unsigned int direction = 0; direction < 3; ++direction)
+            {
+              VectorType v(box.owned, box.comm), w(v), Kv(v), Kw(v);
+              fill_random(v, 1., 10 + direction);
+              fill_random(w, 1., 20 + direction);
+              K.vmult(Kv, v);
+              K.vmult(Kw, w);
+              const double h    = 1e-6;
+              VectorType   plus = x, minus = x;
+              plus.add(h, v);
+              minus.add(-h, v);
+              VectorType difference = residual(plus);
+              difference -= residual(minus);
+              difference /= 2. * h;
+              difference -= Kv;
+              worst     = std::max(worst, difference.l2_norm() / Kv.l2_norm());
+              asymmetry = std::max(asymmetry,
+                                   std::abs(w * Kv - v * Kw) /
+                                     (Kv.l2_norm() * w.l2_norm()));
+            }
+          const std::string tag =
+            std::to_string(dim) + "D " + element_name + " " + model + ": ";
+          checker.at_most(tag + "tangent vs FD of residual", worst, 1e-6);
+          checker.at_most(tag + "tangent symmetric", asymmetry, 1e-10);
+        }
+  }
+
+  template <int dim>
+  void
+  check(Checker &checker, const bool)
+  {
+    check_homogeneous<dim>(checker);
+    check_tangent<dim>(checker);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  return run_checks_for_dimension(argc, argv, check<2>, check<3>);
+}
