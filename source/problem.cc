@@ -1,6 +1,8 @@
 // Orchestration of a scene: setup, load stepping, post-processing, output.
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -155,6 +157,9 @@ namespace hyperelastic
         nullptr);
     // A load without a potential makes the tangent non-symmetric.
     linear_solver.set_symmetric(elasticity->is_conservative());
+    if (parameters.problem.mixed &&
+        parameters.linear_solver.type == LinearSolverType::cg_amg)
+      linear_solver.set_saddle_point(saddle_point_preconditioner());
     if (parameters.output.write_vtu)
       material3d = material->three_dimensional_twin();
     writer = std::make_unique<OutputWriter<dim>>(parameters.output, comm);
@@ -228,6 +233,52 @@ namespace hyperelastic
         pcout << std::endl;
       }
     warn_about_volumetric_locking();
+  }
+
+  template <int dim>
+  std::unique_ptr<SaddlePointPreconditioner>
+  Problem<dim>::saddle_point_preconditioner() const
+  {
+    // The pressure unknowns of every cell this rank sees, and the lumped
+    // pressure mass int psi_i dV on the owned ones.
+    IndexSet                             pressure(dof_handler.n_dofs());
+    VectorType                           mass(owned_dofs, comm);
+    const QGaussSimplex<dim>             quadrature(2);
+    FEValues<dim>                        values(mapping,
+                         fe,
+                         quadrature,
+                         update_values | update_JxW_values);
+    std::vector<types::global_dof_index> dofs(fe.dofs_per_cell);
+    Vector<double>                       cell_mass(fe.dofs_per_cell);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (fe.system_to_component_index(i).first == dim)
+              pressure.add_index(dofs[i]);
+          if (!cell->is_locally_owned())
+            continue;
+          values.reinit(cell);
+          cell_mass = 0.;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (fe.system_to_component_index(i).first == dim)
+                cell_mass[i] += values.shape_value(i, q) * values.JxW(q);
+          mass.add(dofs, cell_mass);
+        }
+    pressure.compress();
+    mass.compress(VectorOperation::add);
+    const double mu    = material->small_strain_moduli().mu;
+    const double kappa = material->volumetric_split()->volumetric.bulk_modulus();
+    std::vector<double> schur_inverse;
+    for (const auto i : owned_dofs)
+      if (pressure.is_element(i))
+        schur_inverse.push_back(1. / ((1. / mu + 1. / kappa) * mass(i)));
+    return std::make_unique<SaddlePointPreconditioner>(owned_dofs,
+                                                       pressure,
+                                                       std::move(schur_inverse),
+                                                       comm);
   }
 
   template <int dim>
@@ -317,6 +368,15 @@ namespace hyperelastic
     // The mixed functional is a saddle point in the pressure: no minimum to
     // search along, so the line search tests the residual norm.
     return elasticity->is_conservative() && !parameters.problem.mixed;
+  }
+
+  template <int dim>
+  std::string
+  Problem<dim>::why_no_potential() const
+  {
+    return parameters.problem.mixed ?
+             "the mixed functional is a saddle point in the pressure" :
+             "a load has no potential";
   }
 
   template <int dim>

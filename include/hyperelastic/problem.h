@@ -112,6 +112,8 @@ namespace hyperelastic
     is_linear() const override;
     bool
     has_potential() const override;
+    std::string
+    why_no_potential() const override;
     double
     directional_derivative() const override;
     TrialPoint
@@ -140,6 +142,10 @@ namespace hyperelastic
     setup();
     void
     warn_about_volumetric_locking() const;
+    /// The mixed formulation's block preconditioner for this mesh: the
+    /// pressure unknowns, S = (1/mu + 1/kappa) lumped pressure mass.
+    std::unique_ptr<SaddlePointPreconditioner>
+    saddle_point_preconditioner() const;
     StepSummary<dim>
     summarize(const LoadStep &step, const NewtonResult &newton_result);
     void

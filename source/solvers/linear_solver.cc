@@ -70,6 +70,10 @@ namespace hyperelastic
   {
     if (parameters.type == LinearSolverType::direct)
       return parameters.direct_solver + " (direct)";
+    if (saddle_point)
+      return "GMRES with a block-triangular preconditioner (ML AMG with "
+             "rigid-body modes on the displacement block, lumped pressure "
+             "mass for the Schur complement); saddle-point tangent";
     return krylov_name() + " with ML AMG (rigid-body near-null space)" +
            (symmetric ? "" : "; the tangent is not symmetric");
   }
@@ -88,19 +92,34 @@ namespace hyperelastic
     std::unique_ptr<Epetra_MultiVector> unused_modes;
     data.set_parameters(ml_list, unused_modes, A);
     ml_list.set("PDE equations", static_cast<int>(n_components));
+    // The mixed formulation: AMG on the displacement block only.
+    if (saddle_point)
+      {
+        saddle_point->extract_displacement_block(A);
+        block_null_space = saddle_point->displacement_rows(null_space, n_modes);
+      }
+    const std::vector<double> &modes =
+      saddle_point ? block_null_space : null_space;
     if (n_modes > 0)
       {
-        AssertDimension(null_space.size(),
-                        n_modes * A.local_range().second -
-                          n_modes * A.local_range().first);
+        if (!saddle_point)
+          AssertDimension(null_space.size(),
+                          n_modes * A.local_range().second -
+                            n_modes * A.local_range().first);
         ml_list.set("null space: type", "pre-computed");
         ml_list.set("null space: dimension", static_cast<int>(n_modes));
         // A rank without rows still must hand ML a valid pointer.
         static double no_rows = 0.;
         ml_list.set("null space: vectors",
-                    null_space.empty() ? &no_rows : null_space.data());
+                    modes.empty() ? &no_rows : const_cast<double *>(modes.data()));
       }
-    amg.initialize(A, ml_list);
+    if (saddle_point)
+      {
+        amg.initialize(saddle_point->displacement_block(), ml_list);
+        saddle_point->set_amg(amg);
+      }
+    else
+      amg.initialize(A, ml_list);
     amg_built         = true;
     rebuild_requested = false;
     baseline_rate     = -1.;
@@ -189,7 +208,14 @@ namespace hyperelastic
     SolverControl control(max_iterations, tolerance * b.l2_norm());
     try
       {
-        if (symmetric)
+        if (saddle_point)
+          {
+            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData data(
+              100, true);
+            SolverGMRES<TrilinosWrappers::MPI::Vector>(control, data)
+              .solve(A, x, b, *saddle_point);
+          }
+        else if (symmetric)
           SolverCG<TrilinosWrappers::MPI::Vector>(control).solve(A, x, b, amg);
         else
           {

@@ -196,9 +196,8 @@ namespace hyperelastic
     if (verbose)
       {
         if (result.residual_merit)
-          pcout << "   (line search on the residual norm: a load has no "
-                   "potential)"
-                << std::endl;
+          pcout << "   (line search on the residual norm: "
+                << system.why_no_potential() << ")" << std::endl;
         pcout << header(result.residual_merit) << std::endl;
       }
 

@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <hyperelastic/solvers/linear_solver_parameters.h>
+#include <hyperelastic/solvers/saddle_point_preconditioner.h>
 
 #include <memory>
 #include <string>
@@ -28,6 +29,16 @@ namespace hyperelastic
     set_near_null_space(std::vector<double> modes,
                         unsigned int        n_modes,
                         unsigned int        n_components);
+
+    /// The mixed formulation: the matrices to come are saddle points,
+    /// solved with GMRES and @p preconditioner (AMG on their displacement
+    /// block, built as below).
+    void
+    set_saddle_point(std::unique_ptr<SaddlePointPreconditioner> preconditioner)
+    {
+      saddle_point = std::move(preconditioner);
+      symmetric    = false;
+    }
 
     /// Makes the preconditioner ready for @p A: builds the AMG hierarchy the
     /// first time and when the last solve asked for a rebuild; otherwise
@@ -78,6 +89,9 @@ namespace hyperelastic
     unsigned int                              n_modes      = 0;
     unsigned int                              n_components = 1;
     dealii::TrilinosWrappers::PreconditionAMG amg;
+    std::unique_ptr<SaddlePointPreconditioner> saddle_point;
+    /// The displacement rows of null_space (saddle point only).
+    std::vector<double> block_null_space;
 
     /// Builds the hierarchy for @p A now.
     void

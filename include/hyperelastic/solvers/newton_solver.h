@@ -85,6 +85,13 @@ namespace hyperelastic
       return true;
     }
 
+    /// Why there is no potential (for the Newton table).
+    virtual std::string
+    why_no_potential() const
+    {
+      return "a load has no potential";
+    }
+
     /// Derivative of the energy at the current iterate along du (negative for
     /// a descent direction). Valid when du leaves the constraints unchanged.
     virtual double

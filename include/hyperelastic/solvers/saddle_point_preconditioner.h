@@ -1,0 +1,74 @@
+// The block preconditioner of the mixed formulation's saddle-point tangent
+//   [ A  B^T ] [du]   [r_u]
+//   [ B  -C  ] [dp] = [r_p]
+// (A: displacement block, B: pressure coupling, C >= 0: pressure block):
+// block lower-triangular,
+//   P^-1 r = ( y_u = AMG(A) r_u ,  y_p = S^-1 (B y_u - r_p) ),
+// with one ML V-cycle on A (rigid-body modes as near-null space) and
+// S = (1/mu + 1/kappa) M_p, M_p the lumped pressure mass, which is spectrally
+// equivalent to the Schur complement B A^-1 B^T + C uniformly in kappa/mu (for
+// Stokes-like problems), so GMRES iterations do not grow with kappa.
+// The unknowns are not renumbered: the blocks are the rows of each kind.
+#pragma once
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <memory>
+#include <vector>
+
+namespace hyperelastic
+{
+  class SaddlePointPreconditioner
+  {
+  public:
+    /// @p owned: this rank's rows; @p pressure: the pressure unknowns among
+    /// (at least) the locally relevant ones; @p schur_inverse: 1 / S_ii for
+    /// the owned pressure rows, in increasing index order.
+    SaddlePointPreconditioner(const dealii::IndexSet &owned,
+                              const dealii::IndexSet &pressure,
+                              std::vector<double>     schur_inverse,
+                              MPI_Comm                comm);
+
+    /// Copies the displacement block A of @p matrix (for AMG) and keeps a
+    /// reference to @p matrix (for B y_u).
+    void
+    extract_displacement_block(const dealii::TrilinosWrappers::SparseMatrix &matrix);
+
+    const Epetra_CrsMatrix &
+    displacement_block() const
+    {
+      return *block;
+    }
+
+    /// The rows of the displacement unknowns of @p modes (column-major over
+    /// the owned rows, @p n_modes columns).
+    std::vector<double>
+    displacement_rows(const std::vector<double> &modes, unsigned int n_modes) const;
+
+    /// Uses @p amg (built on displacement_block()) from now on.
+    void
+    set_amg(const dealii::TrilinosWrappers::PreconditionAMG &amg)
+    {
+      this->amg = &amg;
+    }
+
+    void
+    vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
+          const dealii::TrilinosWrappers::MPI::Vector &src) const;
+
+  private:
+    /// Local row indices of the displacement and pressure unknowns.
+    std::vector<unsigned int>                        u_rows, p_rows;
+    dealii::IndexSet                                 owned, pressure, owned_u;
+    std::vector<double>                              schur_inverse;
+    MPI_Comm                                         comm;
+    std::unique_ptr<Epetra_CrsMatrix>                block;
+    const dealii::TrilinosWrappers::SparseMatrix    *matrix = nullptr;
+    const dealii::TrilinosWrappers::PreconditionAMG *amg    = nullptr;
+    mutable dealii::TrilinosWrappers::MPI::Vector    r_u, y_u, full, product;
+  };
+} // namespace hyperelastic
