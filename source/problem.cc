@@ -270,14 +270,13 @@ namespace hyperelastic
     pressure.compress();
     mass.compress(VectorOperation::add);
     const double mu    = material->small_strain_moduli().mu;
-    const double kappa = material->volumetric_split()->volumetric.bulk_modulus();
-    std::vector<double> schur_inverse;
+    std::vector<double> shear_schur;
     for (const auto i : owned_dofs)
       if (pressure.is_element(i))
-        schur_inverse.push_back(1. / ((1. / mu + 1. / kappa) * mass(i)));
+        shear_schur.push_back(mass(i) / mu);
     return std::make_unique<SaddlePointPreconditioner>(owned_dofs,
                                                        pressure,
-                                                       std::move(schur_inverse),
+                                                       std::move(shear_schur),
                                                        comm);
   }
 

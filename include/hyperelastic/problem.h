@@ -143,7 +143,7 @@ namespace hyperelastic
     void
     warn_about_volumetric_locking() const;
     /// The mixed formulation's block preconditioner for this mesh: the
-    /// pressure unknowns, S = (1/mu + 1/kappa) lumped pressure mass.
+    /// pressure unknowns and (1/mu) times the lumped pressure mass.
     std::unique_ptr<SaddlePointPreconditioner>
     saddle_point_preconditioner() const;
     StepSummary<dim>

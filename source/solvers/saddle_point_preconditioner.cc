@@ -2,6 +2,7 @@
 #include <hyperelastic/solvers/saddle_point_preconditioner.h>
 
 #include <Epetra_Map.h>
+#include <algorithm>
 
 namespace hyperelastic
 {
@@ -10,12 +11,12 @@ namespace hyperelastic
   SaddlePointPreconditioner::SaddlePointPreconditioner(
     const IndexSet     &owned,
     const IndexSet     &pressure,
-    std::vector<double> schur_inverse,
+    std::vector<double> shear_schur,
     const MPI_Comm      comm)
       : owned(owned)
       , pressure(pressure)
       , owned_u(owned.size())
-      , schur_inverse(std::move(schur_inverse))
+      , shear_schur(std::move(shear_schur))
       , comm(comm)
   {
     unsigned int local = 0;
@@ -31,7 +32,7 @@ namespace hyperelastic
         ++local;
       }
     owned_u.compress();
-    AssertThrow(this->schur_inverse.size() == p_rows.size(),
+    AssertThrow(this->shear_schur.size() == p_rows.size(),
                 ExcMessage("one Schur entry per owned pressure row"));
     r_u.reinit(owned_u, comm);
     y_u.reinit(owned_u, comm);
@@ -73,6 +74,22 @@ namespace hyperelastic
                                   columns.data());
       }
     block->FillComplete(map, map);
+    // S_ii = (1/mu) (M_p)_ii + C_ii with C = -(pressure block) as assembled:
+    // U*''(p) M, the stabilisation, MINI's condensed bubble.
+    schur_inverse.resize(p_rows.size());
+    for (std::size_t k = 0; k < p_rows.size(); ++k)
+      {
+        int     n;
+        double *row_values;
+        int    *row_columns;
+        A.ExtractMyRowView(p_rows[k], n, row_values, row_columns);
+        const int global_row = A.RowMap().GID(p_rows[k]);
+        double    C_ii       = 0.;
+        for (int j = 0; j < n; ++j)
+          if (A.ColMap().GID(row_columns[j]) == global_row)
+            C_ii = -row_values[j];
+        schur_inverse[k] = 1. / (shear_schur[k] + std::max(C_ii, 0.));
+      }
   }
 
   std::vector<double>

@@ -4,10 +4,12 @@
 // (A: displacement block, B: pressure coupling, C >= 0: pressure block):
 // block lower-triangular,
 //   P^-1 r = ( y_u = AMG(A) r_u ,  y_p = S^-1 (B y_u - r_p) ),
-// with one ML V-cycle on A (rigid-body modes as near-null space) and
-// S = (1/mu + 1/kappa) M_p, M_p the lumped pressure mass, which is spectrally
-// equivalent to the Schur complement B A^-1 B^T + C uniformly in kappa/mu (for
-// Stokes-like problems), so GMRES iterations do not grow with kappa.
+// with one ML V-cycle on A (rigid-body modes as near-null space) and the
+// diagonal S = (1/mu) M_p + diag(C), M_p the lumped pressure mass: (1/mu) M_p
+// is spectrally equivalent to B A^-1 B^T uniformly in kappa/mu (for
+// Stokes-like problems) and diag(C) carries the compressibility U*''(p) M,
+// the stabilisation and MINI's condensed bubble, so GMRES iterations do not
+// grow with kappa.
 // The unknowns are not renumbered: the blocks are the rows of each kind.
 #pragma once
 
@@ -26,15 +28,15 @@ namespace hyperelastic
   {
   public:
     /// @p owned: this rank's rows; @p pressure: the pressure unknowns among
-    /// (at least) the locally relevant ones; @p schur_inverse: 1 / S_ii for
-    /// the owned pressure rows, in increasing index order.
+    /// (at least) the locally relevant ones; @p shear_schur: (1/mu) (M_p)_ii
+    /// (lumped) for the owned pressure rows, in increasing index order.
     SaddlePointPreconditioner(const dealii::IndexSet &owned,
                               const dealii::IndexSet &pressure,
-                              std::vector<double>     schur_inverse,
+                              std::vector<double>     shear_schur,
                               MPI_Comm                comm);
 
-    /// Copies the displacement block A of @p matrix (for AMG) and keeps a
-    /// reference to @p matrix (for B y_u).
+    /// Copies the displacement block A of @p matrix (for AMG), takes C_ii
+    /// from its pressure block and keeps a reference to @p matrix (B y_u).
     void
     extract_displacement_block(const dealii::TrilinosWrappers::SparseMatrix &matrix);
 
@@ -64,7 +66,7 @@ namespace hyperelastic
     /// Local row indices of the displacement and pressure unknowns.
     std::vector<unsigned int>                        u_rows, p_rows;
     dealii::IndexSet                                 owned, pressure, owned_u;
-    std::vector<double>                              schur_inverse;
+    std::vector<double>                              shear_schur, schur_inverse;
     MPI_Comm                                         comm;
     std::unique_ptr<Epetra_CrsMatrix>                block;
     const dealii::TrilinosWrappers::SparseMatrix    *matrix = nullptr;
