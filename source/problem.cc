@@ -292,9 +292,10 @@ namespace hyperelastic
         !parameters.problem.mixed)
       pcout << "warning: Poisson's ratio " << nu
             << " > 0.45 with P1 elements: expect volumetric locking (too "
-               "stiff in bending and shear). Use 'Problem/Finite element "
-               "degree = 2' or a finer mesh, and check the answer does not "
-               "change."
+               "stiff in bending and shear). Use 'Problem/Formulation = "
+               "mixed' (with decoupled neo-Hookean or Mooney-Rivlin), "
+               "'Problem/Finite element degree = 2' or a finer mesh, and "
+               "check the answer does not change."
             << std::endl;
   }
 

@@ -21,7 +21,11 @@ namespace hyperelastic
                       Selection("CG with AMG|direct"),
                       "'CG with AMG': conjugate gradients preconditioned by "
                       "Trilinos ML algebraic multigrid with all rigid-body "
-                      "modes (scales to large meshes). 'direct': sparse LU "
+                      "modes (scales to large meshes); GMRES when the "
+                      "tangent is not symmetric, and with 'Problem/"
+                      "Formulation = mixed' GMRES with a block "
+                      "preconditioner (the AMG on the displacement block, "
+                      "a diagonal Schur complement). 'direct': sparse LU "
                       "(robust, for small problems).");
     prm.declare_entry("Relative tolerance",
                       "1e-8",

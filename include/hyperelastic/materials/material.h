@@ -9,6 +9,8 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <hyperelastic/materials/volumetric_split.h>
+
 #include <limits>
 #include <memory>
 #include <string>
@@ -33,9 +35,6 @@ namespace hyperelastic
     double
     poisson_ratio() const;
   };
-
-  template <int dim>
-  struct VolumetricSplit;
 
   /// dP/dF stored as A[i][J][k][L] = d P_iJ / d F_kL.
   template <int dim>

@@ -19,8 +19,6 @@
 //   U*(p) = p (J*(p) - 1) - U(J*(p)).
 #pragma once
 
-#include <hyperelastic/materials/material.h>
-
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -90,6 +88,9 @@ namespace hyperelastic
   private:
     double kappa;
   };
+
+  template <int dim>
+  class Material;
 
   /// A model split into its isochoric part (the same model with a zero bulk
   /// modulus: a Material of its own) and its volumetric energy.
