@@ -103,6 +103,20 @@ namespace hyperelastic
     // two ranks with the split ranges); the blocks are index sets instead.
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+    pressure_dofs = IndexSet(dof_handler.n_dofs());
+    if (parameters.problem.mixed)
+      {
+        std::vector<types::global_dof_index> dofs(fe.dofs_per_cell);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial())
+            {
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                if (fe.system_to_component_index(i).first == dim)
+                  pressure_dofs.add_index(dofs[i]);
+            }
+        pressure_dofs.compress();
+      }
     // Located once; a point outside the mesh is an input error now, not
     // after the first load step.
     if (!parameters.output.points.empty())
@@ -239,9 +253,7 @@ namespace hyperelastic
   std::unique_ptr<SaddlePointPreconditioner>
   Problem<dim>::saddle_point_preconditioner() const
   {
-    // The pressure unknowns of every cell this rank sees, and the lumped
-    // pressure mass int psi_i dV on the owned ones.
-    IndexSet                             pressure(dof_handler.n_dofs());
+    // The lumped pressure mass int psi_i dV on the owned pressure unknowns.
     VectorType                           mass(owned_dofs, comm);
     const QGaussSimplex<dim>             quadrature(2);
     FEValues<dim>                        values(mapping,
@@ -251,14 +263,9 @@ namespace hyperelastic
     std::vector<types::global_dof_index> dofs(fe.dofs_per_cell);
     Vector<double>                       cell_mass(fe.dofs_per_cell);
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial())
+      if (cell->is_locally_owned())
         {
           cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (fe.system_to_component_index(i).first == dim)
-              pressure.add_index(dofs[i]);
-          if (!cell->is_locally_owned())
-            continue;
           values.reinit(cell);
           cell_mass = 0.;
           for (unsigned int q = 0; q < quadrature.size(); ++q)
@@ -267,15 +274,14 @@ namespace hyperelastic
                 cell_mass[i] += values.shape_value(i, q) * values.JxW(q);
           mass.add(dofs, cell_mass);
         }
-    pressure.compress();
     mass.compress(VectorOperation::add);
     const double mu    = material->small_strain_moduli().mu;
     std::vector<double> shear_schur;
     for (const auto i : owned_dofs)
-      if (pressure.is_element(i))
+      if (pressure_dofs.is_element(i))
         shear_schur.push_back(mass(i) / mu);
     return std::make_unique<SaddlePointPreconditioner>(owned_dofs,
-                                                       pressure,
+                                                       pressure_dofs,
                                                        std::move(shear_schur),
                                                        comm);
   }
@@ -600,6 +606,21 @@ namespace hyperelastic
 
     if (point_values)
       s.point_displacements = point_values->evaluate(u_ghosted);
+
+    if (parameters.problem.mixed)
+      {
+        double low = std::numeric_limits<double>::max(), high = -low;
+        for (const auto i : owned_dofs)
+          if (pressure_dofs.is_element(i))
+            {
+              const double p = u_ghosted(i);
+              low            = std::min(low, p);
+              high           = std::max(high, p);
+            }
+        s.has_pressure = true;
+        s.pressure_min = Utilities::MPI::min(low, comm);
+        s.pressure_max = Utilities::MPI::max(high, comm);
+      }
 
     scope.stop();
     if (parameters.output.write_vtu)

@@ -3,7 +3,9 @@
 // reactions, deformed bounding boxes and point displacements to 1e-10
 // relative. Scenes: the homogeneous bar (exact answer) and a
 // non-homogeneous clamped bar that is twisted, pulled, loaded by a body
-// force and by a traction, in 2D and 3D, P1 and (twisted) P2.
+// force and by a traction, in 2D and 3D, P1 and (twisted) P2, and (twisted)
+// with the mixed formulation for every mixed element (decoupled neo-Hookean,
+// nu = 0.4999, direct solver; the pressure range is compared too).
 //
 // Usage: mpirun -np N rank_invariance
 #include <deal.II/base/mpi.h>
@@ -30,15 +32,24 @@ namespace
   scene(const int          dim,
         const bool         twisted,
         const unsigned int degree,
-        const std::string &base_name)
+        const std::string &base_name,
+        const std::string &mixed_element = "")
   {
     const bool  three = dim == 3;
+    const bool  mixed = !mixed_element.empty();
     std::string text =
       small_bar(dim, degree) +
+      (mixed ? subsection("Problem",
+                          entry("Formulation", "mixed") +
+                            entry("Mixed element", mixed_element)) :
+               std::string()) +
       subsection("Material",
-                 entry("Model", three ? "neo-Hookean" : "corotational") +
+                 entry("Model",
+                       mixed ? "decoupled neo-Hookean" :
+                       three ? "neo-Hookean" :
+                               "corotational") +
                    entry("Young's modulus", "1") +
-                   entry("Poisson's ratio", "0.3"));
+                   entry("Poisson's ratio", mixed ? "0.4999" : "0.3"));
     if (twisted)
       {
         text += subsection("Loading",
@@ -71,7 +82,7 @@ namespace
         if (three)
           text += dirichlet(4, 4, "z", "0");
       }
-    return text + tight_solver("cg") +
+    return text + tight_solver(mixed ? "direct" : "cg") +
            subsection("Output",
                       entry("Directory", "rank_invariance_output") +
                         entry("Base name", base_name) +
@@ -118,6 +129,11 @@ namespace
                         s.deformed_min[d]);
             numbers.add(step + "deformed max " + std::string(1, "xyz"[d]),
                         s.deformed_max[d]);
+          }
+        if (s.has_pressure)
+          {
+            numbers.add(step + "pressure min", s.pressure_min);
+            numbers.add(step + "pressure max", s.pressure_max);
           }
       }
 
@@ -167,20 +183,35 @@ namespace
   /// Returns {numbers compared, numbers that differ}.
   template <int dim>
   void
-  compare(Checker &checker, const bool twisted, const unsigned int degree)
+  compare(Checker           &checker,
+          const bool         twisted,
+          const unsigned int degree,
+          const std::string &mixed_element = "")
   {
-    const std::string tag = std::to_string(dim) + "d_" +
-                            (twisted ? "twisted" : "bar") + "_P" +
-                            std::to_string(degree);
+    std::string tag = std::to_string(dim) + "d_" +
+                      (twisted ? "twisted" : "bar") + "_P" +
+                      std::to_string(degree);
+    if (!mixed_element.empty())
+      {
+        tag = std::to_string(dim) + "d_twisted_mixed_" + mixed_element;
+        for (char &c : tag)
+          if (c == '/' || c == ' ')
+            c = '_';
+      }
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     const Numbers parallel =
-      solve<dim>(scene(dim, twisted, degree, tag + "_np" + std::to_string(n_ranks)),
+      solve<dim>(scene(dim,
+                       twisted,
+                       degree,
+                       tag + "_np" + std::to_string(n_ranks),
+                       mixed_element),
                  MPI_COMM_WORLD);
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
         const Numbers serial =
-          solve<dim>(scene(dim, twisted, degree, tag + "_np1"), MPI_COMM_SELF);
+          solve<dim>(scene(dim, twisted, degree, tag + "_np1", mixed_element),
+                     MPI_COMM_SELF);
         // Relative to the largest number of the same kind, so that values
         // that are zero by symmetry are judged against the problem's scale.
         double scale = 0.;
@@ -217,6 +248,12 @@ main(int argc, char *argv[])
         {
           compare<2>(checker, twisted, degree);
           compare<3>(checker, twisted, degree);
+        }
+      for (const std::string element :
+           {"P1-bubble/P1", "P1/P1 stabilized", "P2/P1"})
+        {
+          compare<2>(checker, true, 1, element);
+          compare<3>(checker, true, 1, element);
         }
     },
     MPI_COMM_WORLD);

@@ -169,6 +169,8 @@ namespace hyperelastic
     dealii::DoFHandler<dim>                                dof_handler;
     dealii::IndexSet                                       owned_dofs;
     dealii::IndexSet                                       relevant_dofs;
+    /// Mixed formulation: the pressure unknowns among the relevant ones.
+    dealii::IndexSet pressure_dofs;
 
     std::unique_ptr<Material<dim>> material;
     /// The same model in 3D, for the plane-strain stress in the output

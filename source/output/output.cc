@@ -138,6 +138,8 @@ namespace hyperelastic
         for (unsigned int k = 0; k < s.point_displacements.size(); ++k)
           for (unsigned int d = 0; d < dim; ++d)
             csv << ",point" << k + 1 << "_u" << axes[d];
+        if (s.has_pressure)
+          csv << ",pressure_min,pressure_max";
         csv << '\n';
       }
     csv << s.step << ',' << std::setprecision(16) << s.load_factor << ','
@@ -153,6 +155,8 @@ namespace hyperelastic
     for (const auto &displacement : s.point_displacements)
       for (unsigned int d = 0; d < dim; ++d)
         csv << ',' << displacement[d];
+    if (s.has_pressure)
+      csv << ',' << s.pressure_min << ',' << s.pressure_max;
     csv << std::endl;
   }
 

@@ -47,6 +47,10 @@ namespace hyperelastic
     dealii::Tensor<1, dim> deformed_max;
     /// The displacement at each point of 'Output/Points', in their order.
     std::vector<dealii::Tensor<1, dim>> point_displacements;
+    /// The range of the pressure unknowns (mixed formulation only).
+    bool   has_pressure = false;
+    double pressure_min = 0.;
+    double pressure_max = 0.;
   };
 
   template <int dim>
