@@ -174,6 +174,18 @@ namespace hyperelastic
           }
         problem.fe_degree = displacement_degree(problem.mixed_element);
       }
+    // Exact incompressibility needs the pressure as an unknown.
+    if (!problem.mixed && !material.incompressible_entry.empty())
+      reject(material.incompressible_entry,
+             material.incompressible_value,
+             std::string(material.incompressible_entry ==
+                             "Material/Poisson's ratio" ?
+                           "must lie strictly between -1 and 0.5 with the "
+                           "displacement formulation; " :
+                           "is exactly incompressible; ") +
+               "an exactly incompressible material (nu = 0.5, bulk modulus "
+               "'inf') needs 'Problem/Formulation = mixed' (and a model with "
+               "a volumetric split)");
     // Accepting inverted equilibria needs a model defined at J <= 0.
     if (newton.inverted_elements == InvertedElements::warn)
       {

@@ -5,6 +5,10 @@
 #include <hyperelastic/base/parameter_tools.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <limits>
+
+#include <cmath>
 
 namespace hyperelastic
 {
@@ -25,6 +29,29 @@ namespace hyperelastic
     if (!std::isfinite(v))
       reject(section + "/" + name, prm.get(name), "must be a finite number");
     return v;
+  }
+
+  double
+  get_bulk_modulus(dealii::ParameterHandler &prm,
+                   const std::string        &section,
+                   const std::string        &name)
+  {
+    const std::string text = dealii::Utilities::trim(prm.get(name));
+    if (text == "inf" || text == "infinity")
+      return std::numeric_limits<double>::infinity();
+    char        *end   = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
+      reject(section + "/" + name,
+             text,
+             "must be a positive number, or 'inf' (exactly incompressible, "
+             "with 'Problem/Formulation = mixed')");
+    if (!(value > 0.))
+      reject(section + "/" + name,
+             text,
+             "must be positive (or 'inf': exactly incompressible, with "
+             "'Problem/Formulation = mixed')");
+    return value;
   }
 
   std::vector<std::string>

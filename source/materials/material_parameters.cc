@@ -57,7 +57,9 @@ namespace hyperelastic
                       "0.3",
                       Double(),
                       "-1 < nu < 0.5 (used with 'Young's modulus and Poisson's "
-                      "ratio').");
+                      "ratio'); nu = 0.5 is exactly incompressible (lambda = "
+                      "infinity), accepted with 'Problem/Formulation = mixed' "
+                      "only.");
     prm.declare_entry("Shear modulus",
                       "1",
                       Double(),
@@ -70,9 +72,11 @@ namespace hyperelastic
                       "'Lame').");
     prm.declare_entry("Bulk modulus",
                       "1",
-                      Double(),
+                      Anything(),
                       "kappa > 0 (used with 'shear and bulk modulus'; "
-                      "lambda = kappa - 2 mu / 3).");
+                      "lambda = kappa - 2 mu / 3), or 'inf': exactly "
+                      "incompressible, with 'Problem/Formulation = mixed' "
+                      "only.");
     // The models with constants of their own: one subsection each.
     for (const MaterialModel &m : material_models())
       if (m.declare_entries)
@@ -94,6 +98,28 @@ namespace hyperelastic
     if (registered.uses_elastic_constants)
       parse_elastic_constants(prm, elastic_constants);
     factory = registered.parse(prm, elastic_constants);
+    // Which entry, if any, makes the material exactly incompressible.
+    incompressible_entry.clear();
+    if (std::isinf(factory.create<3>()->small_strain_moduli().lambda))
+      {
+        if (!registered.uses_elastic_constants)
+          {
+            incompressible_entry = "Material/" + model + "/Bulk modulus";
+            prm.enter_subsection(model);
+            incompressible_value = prm.get("Bulk modulus");
+            prm.leave_subsection();
+          }
+        else if (prm.get("Elastic constants") == "shear and bulk modulus")
+          {
+            incompressible_entry = "Material/Bulk modulus";
+            incompressible_value = prm.get("Bulk modulus");
+          }
+        else
+          {
+            incompressible_entry = "Material/Poisson's ratio";
+            incompressible_value = prm.get("Poisson's ratio");
+          }
+      }
     prm.leave_subsection();
   }
 
@@ -105,7 +131,7 @@ namespace hyperelastic
     if (constants == "shear and bulk modulus")
       {
         lame.mu            = get_finite(prm, "Material", "Shear modulus");
-        const double kappa = get_finite(prm, "Material", "Bulk modulus");
+        const double kappa = get_bulk_modulus(prm, "Material", "Bulk modulus");
         if (!(lame.mu > 0.))
           reject("Material/Shear modulus",
                  prm.get("Shear modulus"),
@@ -142,7 +168,9 @@ namespace hyperelastic
           reject("Material/Young's modulus",
                  prm.get("Young's modulus"),
                  "must be positive");
-        if (!(nu > -1. && nu < 0.5))
+        // nu = 0.5 (lambda = infinity) only with the mixed formulation:
+        // Parameters checks that, knowing the formulation.
+        if (!(nu > -1. && nu <= 0.5))
           reject("Material/Poisson's ratio",
                  prm.get("Poisson's ratio"),
                  "must lie strictly between -1 and 0.5");

@@ -32,14 +32,25 @@ namespace hyperelastic
     FEValues<dim>                    values(mapping,
                          dof_handler.get_fe(),
                          quadrature,
-                         update_gradients | update_JxW_values);
+                         update_values | update_gradients |
+                           update_JxW_values);
     const FEValuesExtractors::Vector displacement(0);
     std::vector<Tensor<2, dim>>      grad_u(quadrature.size());
+    // Mixed formulation: the stress is P_iso + p J F^-T and the energy
+    // density psi_iso + p (J - 1) - U*(p) (= psi where p = U'(J)), from the
+    // pressure unknown; the full model may have kappa = infinity.
+    const bool mixed = dof_handler.get_fe().n_components() > dim;
+    const auto split   = mixed ? material.volumetric_split() : nullptr;
+    const auto split3d = mixed ? material3d.volumetric_split() : nullptr;
+    const FEValuesExtractors::Scalar pressure(dim);
+    std::vector<double>              p(quadrature.size(), 0.);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           values.reinit(cell);
           values[displacement].get_function_gradients(u, grad_u);
+          if (mixed)
+            values[pressure].get_function_values(u, p);
           const unsigned int index  = cell->active_cell_index();
           double             volume = 0.;
           Tensor<2, 3>       sigma;
@@ -55,10 +66,25 @@ namespace hyperelastic
                   F3[i][j] = F[i][j];
               const double J = determinant(F);
               fields.J[index] += J * JxW;
-              fields.energy_density[index] += material.energy_density(F) * JxW;
               // Cauchy stress sigma = P F^T / J.
-              sigma += material3d.first_piola_kirchhoff(F3) * transpose(F3) /
-                       determinant(F3) * JxW;
+              if (mixed)
+                {
+                  fields.energy_density[index] +=
+                    (split->isochoric->energy_density(F) + p[q] * (J - 1.) -
+                     split->volumetric.conjugate(p[q])) *
+                    JxW;
+                  sigma += (split3d->isochoric->first_piola_kirchhoff(F3) *
+                              transpose(F3) / J +
+                            p[q] * Tensor<2, 3>(unit_symmetric_tensor<3>())) *
+                           JxW;
+                }
+              else
+                {
+                  fields.energy_density[index] +=
+                    material.energy_density(F) * JxW;
+                  sigma += material3d.first_piola_kirchhoff(F3) *
+                           transpose(F3) / determinant(F3) * JxW;
+                }
               volume += JxW;
             }
           fields.J[index] /= volume;

@@ -34,6 +34,15 @@ namespace hyperelastic
              const std::string        &section,
              const std::string        &name);
 
+  /// The bulk-modulus entry @p name of the current subsection @p section
+  /// (declared with Patterns::Anything): a positive number, or 'inf' for an
+  /// exactly incompressible material (mixed formulation only: Parameters
+  /// checks that). Anything else is rejected naming section/name.
+  double
+  get_bulk_modulus(dealii::ParameterHandler &prm,
+                   const std::string        &section,
+                   const std::string        &name);
+
   /// Splits "a; b; c" into trimmed expressions; an all-blank string gives {}.
   std::vector<std::string>
   split_expressions(const std::string &text);

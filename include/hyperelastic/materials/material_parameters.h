@@ -27,6 +27,10 @@ namespace hyperelastic
     LameParameters elastic_constants;
     /// The model with the scene's constants, for either dimension.
     MaterialFactory factory;
+    /// The entry (and its value) that makes the material exactly
+    /// incompressible (a bulk modulus 'inf', Poisson's ratio 0.5); empty if
+    /// none. Only the mixed formulation accepts it.
+    std::string incompressible_entry, incompressible_value;
 
     static void
     declare(ParameterHandler &prm);

@@ -120,9 +120,11 @@ namespace hyperelastic
         "compression (C2 < 0).");
       prm.declare_entry("Bulk modulus",
                         "2",
-                        Double(),
+                        dealii::Patterns::Anything(),
                         "kappa > 0, the constant of kappa/4 (J^2 - 1 - 2 ln "
-                        "J); the small-strain lambda = kappa - 2 mu / 3.");
+                        "J); the small-strain lambda = kappa - 2 mu / 3. "
+                        "'inf': exactly incompressible (J = 1 enforced by "
+                        "the pressure; 'Problem/Formulation = mixed' only).");
     }
 
     /// Reads and validates the entries; an invalid value is an InputError
@@ -133,7 +135,7 @@ namespace hyperelastic
       MooneyRivlinConstants constants;
       constants.c1    = get_finite(prm, section, "C1");
       constants.c2    = get_finite(prm, section, "C2");
-      constants.kappa = get_finite(prm, section, "Bulk modulus");
+      constants.kappa = get_bulk_modulus(prm, section, "Bulk modulus");
       if (constants.c1 < 0.)
         reject(section + "/C1",
                prm.get("C1"),
