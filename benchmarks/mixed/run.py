@@ -90,7 +90,7 @@ SECTIONS = {"assembly": "t_assembly", "line search": "t_line_search",
 
 RUN_FIELDS = ["name", "series", "method", "formulation", "element", "solver", "inexact_newton",
               "nu", "n", "cells", "unknowns", "status", "exit_code", "load_steps", "cut_backs",
-              "newton_iterations", "krylov_iterations", "krylov_per_newton",
+              "newton_iterations", "linear_solves", "krylov_iterations", "krylov_per_newton",
               "line_search_backtracks", "tip_ux", "tip_uy", "tip_uz", "min_J",
               "t_total", "t_setup", "t_assembly", "t_residual", "t_line_search",
               "t_preconditioner", "t_linear_solve", "t_output", "t_elapsed",
@@ -185,6 +185,9 @@ def parse_stdout(text, result):
         m = re.match(r"\|\s*([a-z ]+?)\s*\|\s*(\d+)\s*\|\s*([0-9.eE+-]+)\s*s\s*\|", line)
         if m and m.group(1) in SECTIONS:
             result[SECTIONS[m.group(1)]] = float(m.group(3))
+            if m.group(1) == "linear solve":
+                # one solve per Newton iteration, failed (cut-back) attempts included
+                result["linear_solves"] = int(m.group(2))
 
 
 def parse_csv(path, result):
@@ -212,6 +215,10 @@ class Runner:
     def __init__(self, scratch, reuse=()):
         self.scratch = scratch
         self.done = {r["name"]: r for r in reuse}
+        for r in reuse:  # fields added to the parser since (the logs are kept)
+            log = os.path.join(scratch, r["name"] + ".out")
+            if os.path.exists(log):
+                parse_stdout(open(log).read(), r)
         self.start = time.time()
         os.makedirs(scratch, exist_ok=True)
 
@@ -297,6 +304,7 @@ def load_runs(path):
             elif k == "inexact_newton":
                 r[k] = v == "True"
             elif k in ("n", "cells", "unknowns", "exit_code", "load_steps", "cut_backs",
+                       "linear_solves",
                        "newton_iterations", "krylov_iterations", "line_search_backtracks"):
                 r[k] = int(v)
             else:
@@ -344,14 +352,16 @@ def read_csv(path):
 
 
 NU_FIELDS = ["element", "nu", "inexact_newton", "n", "unknowns", "load_steps", "cut_backs",
-             "newton_iterations", "krylov_iterations", "krylov_per_newton", "t_total",
+             "newton_iterations", "linear_solves", "krylov_iterations", "krylov_per_newton", "t_total",
              "tip_uy", "peak_rss_mb", "status"]
 SIZE_FIELDS = ["element", "n", "cells", "unknowns", "load_steps", "cut_backs",
-               "newton_iterations", "krylov_iterations", "krylov_per_newton", "t_total",
+               "newton_iterations", "linear_solves", "krylov_iterations", "krylov_per_newton", "t_total",
                "t_assembly", "t_residual", "t_line_search", "t_preconditioner",
                "t_linear_solve", "peak_rss_mb", "tip_uy", "loadavg_before", "status"]
-WP_FIELDS = ["method", "n", "unknowns", "newton_iterations", "krylov_per_newton", "t_total",
-             "peak_rss_mb", "tip_uy", "reference_uy", "rel_error", "is_reference", "status"]
+WP_FIELDS = ["method", "n", "unknowns", "load_steps", "cut_backs", "newton_iterations",
+             "linear_solves", "krylov_per_newton", "t_total",
+             "peak_rss_mb", "tip_uy", "reference_uy", "rel_error", "is_reference",
+             "extrapolated_uy", "extrapolation_order", "rel_error_extrapolated", "status"]
 
 
 def series_nu(runner, nus, n):
@@ -372,7 +382,9 @@ def series_size(runner, sizes):
         for n in sizes.get(element, []):
             cfg = mixed_cfg(element, n, NU_HIGH)
             guess = 0.0 if runner.has(cfg) else predict(done, n, 1.15)
-            if guess > SIZE_RUN_CAP or t_series + guess > SIZE_SERIES_BUDGET \
+            if runner.has(cfg):
+                pass  # already run (--reuse, or by an earlier series): costs nothing now
+            elif guess > SIZE_RUN_CAP or t_series + guess > SIZE_SERIES_BUDGET \
                     or runner.elapsed() + guess > TOTAL_BUDGET:
                 print("  skip %s n = %d: predicted %.0f s" % (element, n, guess))
                 continue
@@ -423,6 +435,7 @@ def series_wp(runner, wp_sizes, disp_sizes, reference_n):
         print("  no P2/P1 run succeeded: no reference, no errors")
         return runs
     ref = max(th, key=lambda r: r["n"])
+    extrapolated = richardson(th)
     rows, seen = [], set()
     for r in runs + [ref]:
         if r["name"] in seen:
@@ -433,10 +446,43 @@ def series_wp(runner, wp_sizes, disp_sizes, reference_n):
         row["is_reference"] = r is ref
         if r["status"] == "ok" and "tip_uy" in r:
             row["rel_error"] = abs(r["tip_uy"] - ref["tip_uy"]) / abs(ref["tip_uy"])
+            if extrapolated:
+                row["extrapolated_uy"], row["extrapolation_order"] = extrapolated
+                row["rel_error_extrapolated"] = (abs(r["tip_uy"] - extrapolated[0])
+                                                 / abs(extrapolated[0]))
         rows.append(row)
     print("  reference: P2/P1 n = %d, %d unknowns, tip uy = %.10g"
           % (ref["n"], ref["unknowns"], ref["tip_uy"]))
+    if extrapolated:
+        print("  Richardson extrapolation of the three finest P2/P1 runs: %.10g (order %.2f); "
+              "the reference's own relative error: %.2e"
+              % (extrapolated[0], extrapolated[1],
+                 abs(ref["tip_uy"] - extrapolated[0]) / abs(extrapolated[0])))
     return rows
+
+
+def richardson(runs):
+    """(limit, order) of u(h) = u0 + C h^p through the three finest runs (h = 1/n)."""
+    runs = sorted(runs, key=lambda r: r["n"])[-3:]
+    if len(runs) < 3:
+        return None
+    (n1, u1), (n2, u2), (n3, u3) = [(r["n"], r["tip_uy"]) for r in runs]
+    if (u2 - u1) * (u3 - u2) <= 0:
+        return None  # not monotone: no asymptotic range
+
+    def ratio(p):
+        return (n1 ** -p - n2 ** -p) / (n2 ** -p - n3 ** -p)
+
+    target = (u2 - u1) / (u3 - u2)
+    lo, hi = 0.05, 8.0
+    if not ratio(lo) < target < ratio(hi):
+        return None
+    for _ in range(200):  # ratio(p) increases with p
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if ratio(mid) < target else (lo, mid)
+    p = 0.5 * (lo + hi)
+    c = (u3 - u2) / (n2 ** -p - n3 ** -p)
+    return u3 + c * n3 ** -p, p
 
 
 # ---------------------------------------------------------------- plots
@@ -473,11 +519,12 @@ def plot_all(out_dir, stem_suffix=""):
         ax.invert_xaxis()
         ax.set_xlabel("0.5 - nu  (nu = 0.3 ... 0.49999)")
         ax.set_ylabel("Krylov iterations per Newton step")
-        ax.set_ylim(bottom=0)
+        top = max([num(r, "krylov_per_newton") for r in rows] or [1.0])
+        ax.set_ylim(0, 1.45 * top)  # room for the legend above the curves
         n = int(rows[0]["n"]) if rows else 4
         ax.set_title("3D cantilever %dx%dx%d boxes, GMRES + block preconditioner, 2 ranks"
                      % (4 * n, n, n), fontsize=10)
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=7, ncol=2, loc="upper center")
         ax.grid(True, which="both", alpha=0.3)
         fig.tight_layout()
         fig.savefig(path("nu", "png"), dpi=120)
@@ -519,32 +566,40 @@ def plot_all(out_dir, stem_suffix=""):
         plt.close(fig)
 
     if os.path.exists(path("wp", "csv")):
-        rows = [r for r in read_csv(path("wp", "csv"))
-                if r["status"] == "ok" and r["rel_error"] not in ("", None)
-                and r["is_reference"] != "True"]
-        ref = [r for r in read_csv(path("wp", "csv")) if r["is_reference"] == "True"]
-        fig, ax = plt.subplots(figsize=(6.4, 4.6))
-        for method in ELEMENTS + ["displacement P2 (direct)"]:
-            sel = sorted((r for r in rows if r["method"] == method), key=lambda r: num(r, "unknowns"))
-            if not sel:
-                continue
-            ax.plot([num(r, "rel_error") for r in sel], [num(r, "t_total") for r in sel], "-o",
-                    color=COLORS[method],
-                    label=method + ("" if "direct" in method else " (GMRES)"))
-            for r in sel:
-                ax.annotate("n=%s" % r["n"], (num(r, "rel_error"), num(r, "t_total")),
-                            fontsize=6, xytext=(3, 3), textcoords="offset points")
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.invert_xaxis()
-        ax.set_xlabel("relative error of the tip deflection uy(4, 1, 1)")
-        ax.set_ylabel("total wall time [s] (2 ranks)")
-        title = "nu = 0.4999 cantilever"
+        all_rows = [r for r in read_csv(path("wp", "csv")) if r["status"] == "ok"]
+        ref = [r for r in all_rows if r["is_reference"] == "True"]
+        panels = [("rel_error", "relative error against the reference")]
+        if any(r.get("rel_error_extrapolated") for r in all_rows):
+            panels.append(("rel_error_extrapolated",
+                           "relative error against the extrapolated limit"))
+        fig, axes = plt.subplots(1, len(panels), figsize=(6.0 * len(panels), 4.8), squeeze=False)
+        for ax, (key, xlabel) in zip(axes[0], panels):
+            for method in ELEMENTS + ["displacement P2 (direct)"]:
+                sel = sorted((r for r in all_rows if r["method"] == method and r.get(key)
+                              and num(r, key) > 0), key=lambda r: num(r, "unknowns"))
+                if not sel:
+                    continue
+                ax.plot([num(r, key) for r in sel], [num(r, "t_total") for r in sel], "-o",
+                        color=COLORS[method],
+                        label=method + ("" if "direct" in method else " (GMRES)"))
+                for r in sel:
+                    ax.annotate("n=%s" % r["n"], (num(r, key), num(r, "t_total")),
+                                fontsize=6, xytext=(3, 3), textcoords="offset points")
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            ax.invert_xaxis()
+            ax.set_xlabel(xlabel + ", tip uy(4, 1, 1)", fontsize=9)
+            ax.set_ylabel("total wall time [s] (2 ranks)")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=8)
         if ref:
-            title += "; reference P2/P1 n = %s (%s unknowns)" % (ref[0]["n"], ref[0]["unknowns"])
-        ax.set_title(title, fontsize=9)
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8)
+            axes[0][0].set_title("nu = 0.4999; reference: P2/P1 n = %s (%s unknowns), uy = %.6f"
+                                 % (ref[0]["n"], ref[0]["unknowns"], num(ref[0], "tip_uy")),
+                                 fontsize=8)
+            if len(panels) > 1:
+                axes[0][1].set_title("Richardson limit of the 3 finest P2/P1: uy = %.6f (order %.2f)"
+                                     % (num(ref[0], "extrapolated_uy"),
+                                        num(ref[0], "extrapolation_order")), fontsize=8)
         fig.tight_layout()
         fig.savefig(path("wp", "png"), dpi=120)
         plt.close(fig)
@@ -580,35 +635,48 @@ def print_tables(out_dir, stem_suffix=""):
                                                   sel[0]["newton_iterations"]))
                 if any(cells):
                     print("| %s | %s | %s |" % (element, label, " | ".join(cells)))
+    def newton(r):
+        """Newton iterations of the converged attempts, plus all attempts if cut-backs."""
+        text = r["newton_iterations"]
+        if r.get("linear_solves") and r["linear_solves"] != r["newton_iterations"]:
+            text += " (%s)" % r["linear_solves"]
+        return text
+
+    def unknowns(r):
+        return "{:,}".format(int(num(r, "unknowns"))) if r["unknowns"] else "-"
+
     if os.path.exists(path("size")):
         rows = read_csv(path("size"))
         print("\n| element | n | unknowns | Newton | Krylov / Newton | total [s] | linear solve [s] "
-              "| assembly + residual + line search [s] | peak RSS [MB] | tip uy | status |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|")
+              "| assembly + residual + line search [s] | peak RSS [MB] | tip uy | load avg | status |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|")
         for r in rows:
             other = num(r, "t_assembly") + num(r, "t_residual") + num(r, "t_line_search")
-            print("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-                r["element"], r["n"], "{:,}".format(int(num(r, "unknowns")))
-                if r["unknowns"] else "-", r["newton_iterations"],
+            print("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+                r["element"], r["n"], unknowns(r), newton(r),
                 g(r, "krylov_per_newton", "%.1f"), g(r, "t_total", "%.3g"),
                 g(r, "t_linear_solve", "%.3g"),
                 "-" if math.isnan(other) else "%.3g" % other,
-                g(r, "peak_rss_mb", "%.0f"), g(r, "tip_uy", "%.6f"), r["status"]))
+                g(r, "peak_rss_mb", "%.0f"), g(r, "tip_uy", "%.6f"),
+                g(r, "loadavg_before", "%.1f"), r["status"]))
     if os.path.exists(path("wp")):
         rows = read_csv(path("wp"))
-        print("\n| method | n | unknowns | Newton | Krylov / Newton | total [s] | peak RSS [MB] "
-              "| tip uy | relative error |")
-        print("|---|---|---|---|---|---|---|---|---|")
+        print("\n| method | n | unknowns | load steps | Newton | Krylov / Newton | total [s] "
+              "| peak RSS [MB] | tip uy | rel. error vs reference | rel. error vs extrapolation |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|")
         for r in rows:
             err = "reference" if r["is_reference"] == "True" else g(r, "rel_error", "%.2e")
-            print("| %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-                r["method"], r["n"], "{:,}".format(int(num(r, "unknowns")))
-                if r["unknowns"] else "-", r["newton_iterations"],
-                g(r, "krylov_per_newton", "%.1f"), g(r, "t_total", "%.3g"),
-                g(r, "peak_rss_mb", "%.0f"), g(r, "tip_uy", "%.8f"), err))
+            steps = r["load_steps"] + (" (%s cut-backs)" % r["cut_backs"]
+                                       if r["cut_backs"] not in ("", "0") else "")
+            print("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+                r["method"], r["n"], unknowns(r), steps, newton(r),
+                "-" if "direct" in r["method"] else g(r, "krylov_per_newton", "%.1f"),
+                g(r, "t_total", "%.3g"), g(r, "peak_rss_mb", "%.0f"),
+                g(r, "tip_uy", "%.8f"), err, g(r, "rel_error_extrapolated", "%.2e")))
 
 
 def main():
+    global SIZE_RUN_CAP
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--quick", action="store_true",
                         help="small subset (< 1 min); CSV and PNG go to the scratch folder")
@@ -635,7 +703,6 @@ def main():
         if not os.path.exists(f):
             sys.exit("missing %s (build first: scripts/build.sh)" % f)
 
-    global SIZE_RUN_CAP
     SIZE_RUN_CAP = args.size_cap
     series = set(args.only or ["nu", "size", "wp"])
     reuse = load_runs(os.path.join(out_dir, FILES["runs"] + ".csv")) if args.reuse else []

@@ -5,6 +5,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <hyperelastic/assembly/cell_loop.h>
 #include <hyperelastic/assembly/generic_assembler.h>
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/materials/tangent_projection.h>
@@ -64,34 +65,20 @@ namespace hyperelastic
   GenericAssembler<dim>::for_each_cell(const VectorType &u,
                                        CellWorker      &&worker) const
   {
-    CellData    data(mapping, dof_handler.get_fe(), quadrature);
-    std::string error;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+    CellData data(mapping, dof_handler.get_fe(), quadrature);
+    for_each_owned_cell(dof_handler, [&](const auto &cell) {
+      cell->get_dof_indices(data.dofs);
+      cell->get_dof_values(u, data.u);
+      data.values.reinit(cell);
+      for (unsigned int q = 0; q < data.F.size(); ++q)
         {
-          try
-            {
-              cell->get_dof_indices(data.dofs);
-              cell->get_dof_values(u, data.u);
-              data.values.reinit(cell);
-              for (unsigned int q = 0; q < data.F.size(); ++q)
-                {
-                  Tensor<2, dim> F = unit_symmetric_tensor<dim>();
-                  for (unsigned int i = 0; i < data.u.size(); ++i)
-                    F[data.component[i]] += data.u[i] * data.gradient(i, q);
-                  data.F[q] = F;
-                }
-              worker(data);
-            }
-          catch (const std::exception &e)
-            {
-              error = cell_failure_text(cell->active_cell_index(),
-                                        cell->center(),
-                                        exception_message(e));
-              break;
-            }
+          Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+          for (unsigned int i = 0; i < data.u.size(); ++i)
+            F[data.component[i]] += data.u[i] * data.gradient(i, q);
+          data.F[q] = F;
         }
-    throw_convergence_failure_if_any(error, dof_handler.get_communicator());
+      worker(data);
+    });
   }
 
   template <int dim>

@@ -5,6 +5,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <hyperelastic/assembly/cell_loop.h>
 #include <hyperelastic/assembly/mixed_assembler.h>
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/materials/tangent_projection.h>
@@ -359,30 +360,16 @@ namespace hyperelastic
                                      Worker          &&worker) const
   {
     const unsigned int n_bubble = element == MixedElement::mini ? dim : 0;
-    CellData    data(mapping, dof_handler.get_fe(), quadrature, n_bubble);
-    std::string error;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          try
-            {
-              data.reinit(cell);
-              cell->get_dof_values(u, data.x);
-              if (n_bubble > 0)
-                solve_bubble(data, with_matrix, project_tangent);
-              else
-                evaluate_cell(data, with_matrix, project_tangent);
-              worker(data);
-            }
-          catch (const std::exception &e)
-            {
-              error = cell_failure_text(cell->active_cell_index(),
-                                        cell->center(),
-                                        exception_message(e));
-              break;
-            }
-        }
-    throw_convergence_failure_if_any(error, dof_handler.get_communicator());
+    CellData data(mapping, dof_handler.get_fe(), quadrature, n_bubble);
+    for_each_owned_cell(dof_handler, [&](const auto &cell) {
+      data.reinit(cell);
+      cell->get_dof_values(u, data.x);
+      if (n_bubble > 0)
+        solve_bubble(data, with_matrix, project_tangent);
+      else
+        evaluate_cell(data, with_matrix, project_tangent);
+      worker(data);
+    });
   }
 
   template <int dim>
