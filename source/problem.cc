@@ -25,13 +25,12 @@ namespace hyperelastic
     /// The scene's element: (P_k)^dim for the displacement formulation,
     /// (P_k)^dim x P1 for the mixed one (P_k of its 'Mixed element').
     template <int dim>
-    std::unique_ptr<const FESystem<dim>>
+    FESystem<dim>
     make_finite_element(const ProblemParameters &problem)
     {
       if (!problem.mixed)
-        return std::make_unique<const FESystem<dim>>(
-          FE_SimplexP<dim>(problem.fe_degree), dim);
-      return std::make_unique<const FESystem<dim>>(
+        return FESystem<dim>(FE_SimplexP<dim>(problem.fe_degree), dim);
+      return FESystem<dim>(
         FE_SimplexP<dim>(displacement_degree(problem.mixed_element)),
         dim,
         FE_SimplexP<dim>(1),
@@ -67,8 +66,7 @@ namespace hyperelastic
               print ? TimerOutput::summary : TimerOutput::never,
               TimerOutput::wall_times)
       , triangulation(comm)
-      , fe_storage(make_finite_element<dim>(parameters.problem))
-      , fe(*fe_storage)
+      , fe(make_finite_element<dim>(parameters.problem))
       , mapping(FE_SimplexP<dim>(1))
       , dof_handler(triangulation)
       , linear_solver(parameters.linear_solver)

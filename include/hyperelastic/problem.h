@@ -163,8 +163,7 @@ namespace hyperelastic
 
     dealii::parallel::fullydistributed::Triangulation<dim> triangulation;
     /// (P_k)^dim, and for the mixed formulation a P1 pressure after it.
-    const std::unique_ptr<const dealii::FESystem<dim>> fe_storage;
-    const dealii::FESystem<dim>                       &fe;
+    const dealii::FESystem<dim> fe;
     const dealii::MappingFE<dim>                           mapping;
     dealii::DoFHandler<dim>                                dof_handler;
     dealii::IndexSet                                       owned_dofs;

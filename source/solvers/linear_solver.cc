@@ -98,8 +98,7 @@ namespace hyperelastic
         saddle_point->extract_displacement_block(A);
         block_null_space = saddle_point->displacement_rows(null_space, n_modes);
       }
-    const std::vector<double> &modes =
-      saddle_point ? block_null_space : null_space;
+    std::vector<double> &modes = saddle_point ? block_null_space : null_space;
     if (n_modes > 0)
       {
         if (!saddle_point)
@@ -111,7 +110,7 @@ namespace hyperelastic
         // A rank without rows still must hand ML a valid pointer.
         static double no_rows = 0.;
         ml_list.set("null space: vectors",
-                    modes.empty() ? &no_rows : const_cast<double *>(modes.data()));
+                    modes.empty() ? &no_rows : modes.data());
       }
     if (saddle_point)
       {
