@@ -72,6 +72,7 @@ namespace hyperelastic
       values.reinit(cell);
       cell->get_dof_indices(dofs);
       diameter = cell->diameter();
+      cell_index = cell->active_cell_index();
       for (unsigned int q = 0; q < grad.size(); ++q)
         {
           for (unsigned int i = 0; i < n; ++i)
@@ -112,6 +113,7 @@ namespace hyperelastic
     /// [q][i]: value of pressure shape function i (0 for u unknowns).
     std::vector<std::vector<double>> psi;
     double                           diameter = 0.;
+    unsigned int                     cell_index = 0;
 
     // Results of evaluate_cell().
     Vector<double>     residual;
@@ -146,11 +148,15 @@ namespace hyperelastic
 
   template <int dim>
   void
-  MixedAssembler<dim>::evaluate_cell(CellData  &data,
-                                     const bool with_matrix,
-                                     const bool project_tangent) const
+  MixedAssembler<dim>::evaluate_cell(CellData        &data,
+                                     const CellOutput output,
+                                     const bool       project_tangent) const
   {
-    const unsigned int   n_total = data.n + data.n_bubble;
+    const bool with_matrix = output != CellOutput::residual;
+    // The bubble's block: its rows and columns only, no energy.
+    const bool         bubble_only = output == CellOutput::bubble_block;
+    const unsigned int first       = bubble_only ? data.n : 0;
+    const unsigned int n_total     = data.n + data.n_bubble;
     const Material<dim> &iso     = *split->isochoric;
     const auto          &vol     = split->volumetric;
     data.residual                = 0.;
@@ -211,13 +217,14 @@ namespace hyperelastic
           }
         else
           P = iso.first_piola_kirchhoff(F);
-        data.energy +=
-          (iso.energy_density(F) + p * (J - 1.) - vol.conjugate(p)) * JxW;
+        if (!bubble_only)
+          data.energy +=
+            (iso.energy_density(F) + p * (J - 1.) - vol.conjugate(p)) * JxW;
         P += p * JG;
 
         const double volumetric_residual = J - vol.conjugate_J(p);
         const double pressure_stiffness  = -vol.conjugate_second_derivative(p);
-        for (unsigned int i = 0; i < n_total; ++i)
+        for (unsigned int i = first; i < n_total; ++i)
           {
             const unsigned int ci = data.component[i];
             if (i < data.n && ci == dim)
@@ -235,7 +242,7 @@ namespace hyperelastic
             if (!with_matrix)
               continue;
             const double coupling = (JG[ci] * grad[i]) * JxW;
-            for (unsigned int j = 0; j < n_total; ++j)
+            for (unsigned int j = first; j < n_total; ++j)
               {
                 const unsigned int cj = data.component[j];
                 if (j < data.n && cj == dim)
@@ -285,28 +292,27 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
-  MixedAssembler<dim>::solve_bubble(CellData  &data,
-                                    const bool with_matrix,
-                                    const bool project_tangent) const
+  typename MixedAssembler<dim>::BubbleOutcome
+  MixedAssembler<dim>::iterate_bubble(CellData  &data,
+                                      const bool project_tangent) const
   {
     const unsigned int n = data.n, nb = data.n_bubble;
     FullMatrix<double> K_bb(nb, nb), K_bb_inverse(nb, nb);
-    data.bubble = 0.;
     // Newton on R_b(bubble) = 0 with the cell's other unknowns fixed; the
     // bubble's equations are those of a stiff small-strain problem, so a
     // few iterations reach round-off.
     constexpr unsigned int max_iterations = 30;
-    for (unsigned int it = 0;; ++it)
+    double                 step           = 0.;
+    for (unsigned int it = 0; it < max_iterations; ++it)
       {
-        evaluate_cell(data, true, project_tangent);
+        evaluate_cell(data, CellOutput::bubble_block, project_tangent);
         if (!(data.min_J > 0.))
-          return; // inadmissible: residual is NaN
+          return BubbleOutcome::inadmissible;
         for (unsigned int a = 0; a < nb; ++a)
           for (unsigned int b = 0; b < nb; ++b)
             K_bb(a, b) = data.matrix(n + a, n + b);
         K_bb_inverse.invert(K_bb);
-        double step = 0.;
+        step = 0.;
         for (unsigned int a = 0; a < nb; ++a)
           {
             double d = 0.;
@@ -315,15 +321,55 @@ namespace hyperelastic
             data.bubble[a] += d;
             step = std::max(step, std::abs(d));
           }
-        if (step <= 1e-14 * data.diameter || it + 1 == max_iterations)
-          {
-            if (step > 1e-10 * data.diameter)
-              throw std::domain_error("the cell's bubble equations did not "
-                                      "converge");
-            break;
-          }
+        if (step <= 1e-14 * data.diameter)
+          return BubbleOutcome::converged;
       }
-    evaluate_cell(data, true, project_tangent);
+    return step <= 1e-10 * data.diameter ? BubbleOutcome::converged :
+                                           BubbleOutcome::not_converged;
+  }
+
+  template <int dim>
+  void
+  MixedAssembler<dim>::solve_bubble(CellData  &data,
+                                    const bool with_matrix,
+                                    const bool project_tangent) const
+  {
+    const unsigned int n = data.n, nb = data.n_bubble;
+    const std::size_t  n_cached =
+      std::size_t(dof_handler.get_triangulation().n_active_cells()) * nb;
+    if (bubble_cache.size() != n_cached)
+      bubble_cache.assign(n_cached, 0.);
+    double *cached = bubble_cache.data() + std::size_t(data.cell_index) * nb;
+
+    bool warm = false;
+    for (unsigned int a = 0; a < nb; ++a)
+      {
+        data.bubble[a] = cached[a];
+        warm           = warm || cached[a] != 0.;
+      }
+    BubbleOutcome outcome = iterate_bubble(data, project_tangent);
+    if (outcome != BubbleOutcome::converged && warm)
+      {
+        // The last bubble was too far from this state: from zero.
+        data.bubble = 0.;
+        outcome     = iterate_bubble(data, project_tangent);
+      }
+    if (outcome == BubbleOutcome::inadmissible)
+      return; // data holds the NaN residual and min_J <= 0
+    if (outcome == BubbleOutcome::not_converged)
+      throw std::domain_error("the cell's bubble equations did not converge");
+    for (unsigned int a = 0; a < nb; ++a)
+      cached[a] = data.bubble[a];
+
+    if (!with_matrix)
+      {
+        // R_b is zero to round-off: the condensed residual R_r - K_rb
+        // K_bb^-1 R_b is R_r.
+        evaluate_cell(data, CellOutput::residual, project_tangent);
+        return;
+      }
+    FullMatrix<double> K_bb(nb, nb), K_bb_inverse(nb, nb);
+    evaluate_cell(data, CellOutput::residual_and_matrix, project_tangent);
     if (!(data.min_J > 0.))
       return;
     for (unsigned int a = 0; a < nb; ++a)
@@ -345,9 +391,8 @@ namespace hyperelastic
         {
           const double K_ia = data.matrix(i, n + a);
           data.residual[i] -= K_ia * S_R[a];
-          if (with_matrix)
-            for (unsigned int j = 0; j < n; ++j)
-              data.matrix(i, j) -= K_ia * S_K(a, j);
+          for (unsigned int j = 0; j < n; ++j)
+            data.matrix(i, j) -= K_ia * S_K(a, j);
         }
   }
 
@@ -367,7 +412,10 @@ namespace hyperelastic
       if (n_bubble > 0)
         solve_bubble(data, with_matrix, project_tangent);
       else
-        evaluate_cell(data, with_matrix, project_tangent);
+        evaluate_cell(data,
+                      with_matrix ? CellOutput::residual_and_matrix :
+                                    CellOutput::residual,
+                      project_tangent);
       worker(data);
     });
   }

@@ -86,11 +86,33 @@ namespace hyperelastic
                   bool              project_tangent,
                   Worker          &&worker) const;
 
+    /// What evaluate_cell() computes: the bubble's own block (residual
+    /// rows and matrix of the bubble unknowns, for its cell solve), the
+    /// residual and energy, or the residual, energy and whole matrix.
+    enum class CellOutput
+    {
+      bubble_block,
+      residual,
+      residual_and_matrix
+    };
+
     /// The cell's residual (and matrix) at its current values and bubble.
     void
-    evaluate_cell(CellData &data, bool with_matrix, bool project_tangent) const;
+    evaluate_cell(CellData &data, CellOutput output, bool project_tangent) const;
 
-    /// MINI: solve the cell's bubble equations, then condense.
+    enum class BubbleOutcome
+    {
+      converged,
+      inadmissible, ///< a point with J <= 0 on the way
+      not_converged
+    };
+
+    /// MINI: Newton on the cell's bubble equations from data.bubble.
+    BubbleOutcome
+    iterate_bubble(CellData &data, bool project_tangent) const;
+
+    /// MINI: solve the cell's bubble equations (from the cell's last
+    /// bubble, else from zero), then evaluate and condense.
     void
     solve_bubble(CellData &data, bool with_matrix, bool project_tangent) const;
 
@@ -102,5 +124,9 @@ namespace hyperelastic
     const dealii::Quadrature<dim>         quadrature;
     /// 1/mu of the stabilisation (P1/P1).
     const double inverse_shear_modulus;
+    /// MINI: the last converged bubble of each cell (dim values per active
+    /// cell index), the start of its next cell solve: Newton and line-search
+    /// states are close to each other, so one or two local iterations do.
+    mutable std::vector<double> bubble_cache;
   };
 } // namespace hyperelastic
