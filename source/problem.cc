@@ -146,7 +146,8 @@ namespace hyperelastic
                           &internal_force,
                           &external_force,
                           &residual,
-                          &converged.u})
+                          &converged.u,
+                          &previous.u})
       v->reinit(owned_dofs, comm);
     u_ghosted.reinit(owned_dofs, relevant_dofs, comm);
 
@@ -526,12 +527,45 @@ namespace hyperelastic
   Problem<dim>::set_load_factor(const double t)
   {
     load_factor = t;
+    if (parameters.load_stepping.secant_predictor && previous.valid &&
+        !material->is_linear())
+      predict(t);
+  }
+
+  template <int dim>
+  void
+  Problem<dim>::predict(const double t)
+  {
+    const double last_increment = converged.load_factor - previous.load_factor;
+    if (!(last_increment > 0.))
+      return;
+    TimerOutput::Scope scope(timer, "predictor");
+    // u = u_n + (t - t_n) / (t_n - t_n-1) (u_n - u_n-1); the prescribed
+    // displacements are extrapolated too, and the first Newton iteration
+    // imposes whatever of them is still missing.
+    trial = converged.u;
+    trial -= previous.u;
+    u = converged.u;
+    u.add((t - converged.load_factor) / last_increment, trial);
+    u_ghosted = u;
+    if (!(elasticity->evaluate(u_ghosted, load_factor, false).min_J > 0.))
+      {
+        u         = converged.u;
+        u_ghosted = u;
+        return;
+      }
+    ++secant_predictions;
   }
 
   template <int dim>
   void
   Problem<dim>::store_converged_state()
   {
+    // The last converged state becomes the one before (the vectors swap;
+    // no copy), then the current one is stored.
+    std::swap(previous, converged);
+    converged.valid         = true;
+    converged.load_factor   = load_factor;
     converged.u             = u;
     converged.force_scale   = force_scale;
     converged.solution_size = solution_size;

@@ -74,11 +74,25 @@ namespace hyperelastic
       return timer.get_summary_data(dealii::TimerOutput::total_wall_time);
     }
 
-    /// How often the AMG hierarchy was built (for benchmarks).
+    /// How often the AMG hierarchy was computed (for benchmarks).
     unsigned int
     n_preconditioner_setups() const
     {
       return linear_solver.n_preconditioner_setups();
+    }
+
+    /// How many of those were refreshes on earlier aggregates.
+    unsigned int
+    n_preconditioner_refreshes() const
+    {
+      return linear_solver.n_preconditioner_refreshes();
+    }
+
+    /// How many load steps started from an (admissible) secant prediction.
+    unsigned int
+    n_secant_predictions() const
+    {
+      return secant_predictions;
     }
 
     /// Which linear solver runs (the run header's line).
@@ -215,13 +229,23 @@ namespace hyperelastic
     double                           converged_min_J          = 1.;
     dealii::types::global_cell_index converged_inverted_cells = 0;
 
-    /// The last converged state, to return to after a failed load step.
+    /// A converged state: the last one, to return to after a failed load
+    /// step, and the one before it (the secant predictor's other point).
     struct ConvergedState
     {
       VectorType u;
       double     force_scale   = 0.;
       double     solution_size = 0.;
-    } converged;
+      double     load_factor   = 0.;
+      bool       valid         = false;
+    } converged, previous;
+
+    /// 'Load stepping/Predictor = secant': moves u from the last converged
+    /// state along its last increment to load factor @p t, unless an element
+    /// of the prediction has J <= 0.
+    void
+    predict(double t);
+    unsigned int secant_predictions = 0;
 
     std::vector<StepSummary<dim>> step_summaries;
   };

@@ -62,7 +62,7 @@ namespace hyperelastic
     if (parameters.type == LinearSolverType::direct)
       return;
     if (!amg_built || rebuild_requested || parameters.amg_rebuild_growth == 0.)
-      build_amg(A);
+      build_amg(A, true);
   }
 
   std::string
@@ -79,8 +79,25 @@ namespace hyperelastic
   }
 
   void
-  LinearSolver::build_amg(const TrilinosWrappers::SparseMatrix &A)
+  LinearSolver::build_amg(const TrilinosWrappers::SparseMatrix &A,
+                          const bool may_reuse_aggregates)
   {
+    if (saddle_point)
+      saddle_point->extract_displacement_block(A);
+    const void *matrix = &A.trilinos_matrix();
+    if (may_reuse_aggregates && parameters.amg_reuse_aggregates && amg_built &&
+        matrix == amg_matrix)
+      {
+        // The same matrix object (and, for the saddle point, the same
+        // displacement block object) with new values: ML recomputes the
+        // prolongators, coarse operators and smoothers on its aggregates.
+        amg.reinit();
+        rebuild_requested = false;
+        baseline_rate     = -1.;
+        ++n_setups;
+        ++n_refreshes;
+        return;
+      }
     // ML smoothed aggregation with the full rigid-body near-null space.
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
@@ -94,10 +111,7 @@ namespace hyperelastic
     ml_list.set("PDE equations", static_cast<int>(n_components));
     // The mixed formulation: AMG on the displacement block only.
     if (saddle_point)
-      {
-        saddle_point->extract_displacement_block(A);
-        block_null_space = saddle_point->displacement_rows(null_space, n_modes);
-      }
+      block_null_space = saddle_point->displacement_rows(null_space, n_modes);
     std::vector<double> &modes = saddle_point ? block_null_space : null_space;
     if (n_modes > 0)
       {
@@ -120,6 +134,7 @@ namespace hyperelastic
     else
       amg.initialize(A, ml_list);
     amg_built         = true;
+    amg_matrix        = matrix;
     rebuild_requested = false;
     baseline_rate     = -1.;
     ++n_setups;
@@ -169,9 +184,9 @@ namespace hyperelastic
     unsigned int  iterations = control.last_step();
     if (control.last_check() != SolverControl::success && !fresh)
       {
-        // Rebuild for this tangent and try once more (the same decision on
-        // every rank: CG's counts are global).
-        build_amg(A);
+        // Build anew for this tangent and try once more (the same decision
+        // on every rank: CG's counts are global).
+        build_amg(A, false);
         x = 0.;
         control =
           run_cg(A, x, b, relative_tolerance, parameters.max_iterations);

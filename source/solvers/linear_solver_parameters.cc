@@ -62,6 +62,16 @@ namespace hyperelastic
       "decade of residual reduction of the first solve with the hierarchy "
       "(and at least 5 more), or when CG fails with an old hierarchy. 0: "
       "rebuild for every solve.");
+    prm.declare_entry(
+      "AMG reuse aggregates",
+      "true",
+      Bool(),
+      "true: a rebuild for a new tangent (see AMG rebuild growth) keeps the "
+      "aggregates of the hierarchy's first build and recomputes only the "
+      "prolongators, coarse operators and smoothers from the new matrix "
+      "(ML's ReComputePreconditioner), which is cheaper; if CG then fails, "
+      "the hierarchy is built anew once. false: every rebuild aggregates "
+      "anew.");
     prm.leave_subsection();
   }
 
@@ -81,6 +91,7 @@ namespace hyperelastic
     aggregation_threshold = prm.get_double("AMG aggregation threshold");
     smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
     amg_rebuild_growth    = prm.get_double("AMG rebuild growth");
+    amg_reuse_aggregates  = prm.get_bool("AMG reuse aggregates");
     prm.leave_subsection();
   }
 } // namespace hyperelastic

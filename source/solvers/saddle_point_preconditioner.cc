@@ -46,8 +46,13 @@ namespace hyperelastic
   {
     this->matrix             = &matrix;
     const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
-    const Epetra_Map        map = owned_u.make_trilinos_map(comm, false);
-    block = std::make_unique<Epetra_CrsMatrix>(Copy, map, A.MaxNumEntries());
+    // The tangent's pattern never changes: after the first extraction the
+    // block keeps its object and pattern and gets new values (so that an
+    // AMG hierarchy built on it can be refreshed in place).
+    const bool first = block == nullptr;
+    const Epetra_Map map = owned_u.make_trilinos_map(comm, false);
+    if (first)
+      block = std::make_unique<Epetra_CrsMatrix>(Copy, map, A.MaxNumEntries());
     std::vector<int>    columns;
     std::vector<double> values;
     for (const unsigned int row : u_rows)
@@ -68,12 +73,22 @@ namespace hyperelastic
               }
           }
         const int global_row = A.RowMap().GID(row);
-        block->InsertGlobalValues(global_row,
-                                  columns.size(),
-                                  values.data(),
-                                  columns.data());
+        const int error =
+          first ? block->InsertGlobalValues(global_row,
+                                            columns.size(),
+                                            values.data(),
+                                            columns.data()) :
+                  block->ReplaceGlobalValues(global_row,
+                                             columns.size(),
+                                             values.data(),
+                                             columns.data());
+        // Insert may warn (> 0) about allocation; Replace must find all.
+        AssertThrow(first ? error >= 0 : error == 0,
+                    ExcMessage("extracting the displacement block failed "
+                               "(Epetra error " + std::to_string(error) + ")"));
       }
-    block->FillComplete(map, map);
+    if (first)
+      block->FillComplete(map, map);
     // S_ii = (1/mu) (M_p)_ii + C_ii with C = -(pressure block) as assembled:
     // U*''(p) M, the stabilisation, MINI's condensed bubble.
     schur_inverse.resize(p_rows.size());

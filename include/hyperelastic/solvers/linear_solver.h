@@ -76,11 +76,20 @@ namespace hyperelastic
     std::string
     description() const;
 
-    /// How often the AMG hierarchy has been built.
+    /// How often the AMG hierarchy has been computed (built anew or
+    /// refreshed on its aggregates).
     unsigned int
     n_preconditioner_setups() const
     {
       return n_setups;
+    }
+
+    /// How many of those setups were refreshes on the aggregates of an
+    /// earlier build ("AMG reuse aggregates").
+    unsigned int
+    n_preconditioner_refreshes() const
+    {
+      return n_refreshes;
     }
 
   private:
@@ -93,9 +102,12 @@ namespace hyperelastic
     /// The displacement rows of null_space (saddle point only).
     std::vector<double> block_null_space;
 
-    /// Builds the hierarchy for @p A now.
+    /// Computes the hierarchy for @p A now: refreshed on the aggregates of
+    /// the last full build if @p may_reuse_aggregates, the parameters allow
+    /// it and the matrix is the same object; otherwise built anew.
     void
-    build_amg(const dealii::TrilinosWrappers::SparseMatrix &A);
+    build_amg(const dealii::TrilinosWrappers::SparseMatrix &A,
+              bool may_reuse_aggregates);
 
     /// CG with the current hierarchy; the control tells how it ended.
     dealii::SolverControl
@@ -108,6 +120,10 @@ namespace hyperelastic
     bool         amg_built         = false;
     bool         rebuild_requested = false;
     unsigned int n_setups          = 0;
+    unsigned int n_refreshes       = 0;
+    /// The matrix the hierarchy was last built anew for (a refresh needs
+    /// the same Epetra object, with new values).
+    const void *amg_matrix = nullptr;
     bool         symmetric         = true;
     /// Iterations per decade of the first solve with the current hierarchy
     /// (negative until it has run).

@@ -29,6 +29,9 @@ namespace hyperelastic
     /// times the iterations (per decade of residual reduction) of the first
     /// solve with the current hierarchy; 0: rebuilt for every solve.
     double amg_rebuild_growth = 1.5;
+    /// Refresh a hierarchy for a new tangent on the aggregates of its first
+    /// build (ML's ReComputePreconditioner) instead of aggregating anew.
+    bool amg_reuse_aggregates = true;
 
     static void
     declare(ParameterHandler &prm);

@@ -14,6 +14,9 @@ namespace hyperelastic
     bool         adaptive             = true;
     double       minimum_increment    = 1e-4;
     unsigned int easy_step_iterations = 6;
+    /// Start each load step after the first from the secant extrapolation
+    /// of the last two converged states (if admissible).
+    bool secant_predictor = false;
 
     static void
     declare(ParameterHandler &prm);
