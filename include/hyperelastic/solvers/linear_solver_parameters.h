@@ -31,7 +31,7 @@ namespace hyperelastic
     double amg_rebuild_growth = 1.5;
     /// Refresh a hierarchy for a new tangent on the aggregates of its first
     /// build (ML's ReComputePreconditioner) instead of aggregating anew.
-    bool amg_reuse_aggregates = true;
+    bool amg_reuse_aggregates = false;
 
     static void
     declare(ParameterHandler &prm);
