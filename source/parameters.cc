@@ -94,6 +94,7 @@ namespace hyperelastic
     LoadSteppingParameters::declare(prm);
     LinearSolverParameters::declare(prm);
     OutputParameters::declare(prm);
+    TimeIntegrationParameters::declare(prm);
   }
 
   void
@@ -107,6 +108,7 @@ namespace hyperelastic
     load_stepping.parse(prm);
     linear_solver.parse(prm);
     output.parse(prm);
+    time_integration.parse(prm);
 
     // Checks that need the dimension.
     const unsigned int dim = problem.dimension;
@@ -132,6 +134,16 @@ namespace hyperelastic
                    std::to_string(mesh.upper_corner[d]),
                    "every coordinate must exceed the lower corner's");
       }
+    if (time_integration.dynamic() && problem.mixed)
+      reject("Time integration/Scheme",
+             time_integration.scheme_name(),
+             "implicit dynamics is not available with 'Problem/Formulation "
+             "= mixed' yet");
+    if (!time_integration.initial_velocity.empty() &&
+        time_integration.initial_velocity.size() != dim)
+      reject("Time integration/Initial velocity",
+             size(time_integration.initial_velocity) + " expressions",
+             "needs " + std::to_string(dim) + " expressions");
     if (!loading.body_force.empty() && loading.body_force.size() != dim)
       reject("Loading/Body force",
              size(loading.body_force) + " expressions",

@@ -6,6 +6,7 @@
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/numerics/vector_tools.h>
 
 #include <hyperelastic/assembly/mixed_assembler.h>
 #include <hyperelastic/base/error_handling.h>
@@ -88,12 +89,14 @@ namespace hyperelastic
       std::make_unique<BoundaryConditions<dim>>(parameters.loading, mesh_ids);
     if (load_editor)
       load_editor(*boundary_conditions);
-    if (boundary_conditions->dirichlet.empty())
+    if (boundary_conditions->dirichlet.empty() &&
+        !parameters.time_integration.dynamic())
       throw InputError("no Dirichlet condition is set (sections 'Dirichlet 1' "
                        "... 'Dirichlet " +
                        std::to_string(LoadingParameters::max_dirichlet) +
                        "'): rigid-body motions would be free and the "
-                       "quasi-static problem singular");
+                       "quasi-static problem singular (in dynamics, "
+                       "'Time integration/Scheme', the mass makes it regular)");
 
     dof_handler.distribute_dofs(fe);
     // Mixed formulation: the dofs are not renumbered by component (each
@@ -168,6 +171,8 @@ namespace hyperelastic
                                               *material,
                                               parameters.problem.mixed_element) :
         nullptr);
+    if (parameters.time_integration.dynamic())
+      setup_dynamics();
     // A load without a potential makes the tangent non-symmetric.
     linear_solver.set_symmetric(elasticity->is_conservative());
     if (parameters.problem.mixed &&
@@ -527,9 +532,66 @@ namespace hyperelastic
   Problem<dim>::set_load_factor(const double t)
   {
     load_factor = t;
-    if (parameters.load_stepping.secant_predictor && previous.valid &&
-        !material->is_linear())
+    if (inertia)
+      {
+        step_end_time = t;
+        load_factor   = integrator->evaluation_time(converged.load_factor, t);
+        begin_time_step(t);
+      }
+    else if (parameters.load_stepping.secant_predictor && previous.valid &&
+             !material->is_linear())
       predict(t);
+  }
+
+  template <int dim>
+  void
+  Problem<dim>::setup_dynamics()
+  {
+    const TimeIntegrationParameters &ti = parameters.time_integration;
+    auto term = std::make_unique<InertiaTerm<dim>>(dof_handler,
+                                                   ti.density,
+                                                   ti.lumped_mass);
+    inertia = term.get();
+    elasticity->add_term(std::move(term));
+    integrator = std::make_unique<TimeIntegrator>(ti.scheme, ti.mass_damping);
+    motion = std::make_unique<Motion<dim>>(dof_handler, mapping, *inertia);
+    for (VectorType *v :
+         {&velocity, &acceleration, &new_velocity, &new_acceleration})
+      v->reinit(owned_dofs, comm);
+    if (!ti.initial_velocity.empty())
+      {
+        const auto v0 =
+          parse_vector_function<dim>(ti.initial_velocity,
+                                     parameters.loading.constants,
+                                     "Time integration/Initial velocity");
+        v0->set_time(0.);
+        VectorTools::interpolate(mapping, dof_handler, *v0, velocity);
+      }
+    if (ti.scheme == TimeScheme::newmark)
+      {
+        // M a_0 = f_ext(0) - f_int(u_0) on the free dofs (the inertia term's
+        // scale is still 0); supported dofs start at rest.
+        u_ghosted = u;
+        elasticity->assemble_forces(u_ghosted, 0., internal_force, external_force);
+        residual = external_force;
+        residual -= internal_force;
+        inertia->solve_mass(residual, homogeneous_constraints, acceleration);
+      }
+  }
+
+  template <int dim>
+  void
+  Problem<dim>::begin_time_step(const double t)
+  {
+    // The step starts from the last converged state (u = u_n).
+    double c = 0.;
+    integrator->step_target(t - converged.load_factor,
+                            converged.u,
+                            velocity,
+                            acceleration,
+                            c,
+                            trial);
+    inertia->set_step(c, trial);
   }
 
   template <int dim>
@@ -563,6 +625,23 @@ namespace hyperelastic
   {
     // The last converged state becomes the one before (the vectors swap;
     // no copy), then the current one is stored.
+    if (inertia && converged.valid)
+      {
+        // The step from converged (t_n, u_n) to its end (implicit
+        // midpoint: from the solved midpoint state): new u, v and a.
+        integrator->end_state(converged.u, u);
+        u_ghosted   = u;
+        load_factor = step_end_time;
+        integrator->finish_step(load_factor - converged.load_factor,
+                                converged.u,
+                                velocity,
+                                acceleration,
+                                u,
+                                new_velocity,
+                                new_acceleration);
+        velocity.swap(new_velocity);
+        acceleration.swap(new_acceleration);
+      }
     std::swap(previous, converged);
     converged.valid         = true;
     converged.load_factor   = load_factor;
@@ -600,6 +679,19 @@ namespace hyperelastic
     s.newton_history    = result.history;
     s.residual          = result.history.back().residual;
     s.energy            = elasticity->total_energy(u_ghosted, load_factor);
+    if (inertia)
+      {
+        // Potential energy without the step's inertia term; kinetic energy
+        // and momenta of the converged motion.
+        s.energy -= inertia->potential(u_ghosted, load_factor);
+        VectorType v_ghosted(u_ghosted);
+        v_ghosted            = velocity;
+        const MotionMeasures m = motion->measure(u_ghosted, v_ghosted);
+        s.dynamic            = true;
+        s.kinetic_energy     = m.kinetic_energy;
+        s.linear_momentum    = m.linear_momentum;
+        s.angular_momentum   = m.angular_momentum;
+      }
     s.min_J             = converged_min_J;
     s.inverted_cells    = converged_inverted_cells;
 
@@ -655,15 +747,36 @@ namespace hyperelastic
       }
 
     scope.stop();
-    if (parameters.output.write_vtu)
-      {
-        TimerOutput::Scope output_scope(timer, "output");
-        const CellFields   fields = compute_cell_fields(
-          dof_handler, mapping, *material, *material3d, u_ghosted);
-        writer->write_fields(
-          step.step, load_factor, dof_handler, mapping, u_ghosted, fields);
-      }
+    // In dynamics every 'Output every' steps and the last one.
+    const bool output_step =
+      !inertia || step.step % parameters.time_integration.output_every == 0 ||
+      load_factor >= parameters.time_integration.end_time;
+    if (parameters.output.write_vtu && output_step)
+      write_fields(step.step);
     return s;
+  }
+
+  template <int dim>
+  void
+  Problem<dim>::write_fields(const unsigned int step)
+  {
+    TimerOutput::Scope output_scope(timer, "output");
+    const CellFields   fields = compute_cell_fields(
+      dof_handler, mapping, *material, *material3d, u_ghosted);
+    // In dynamics the velocity too.
+    VectorType v_ghosted;
+    if (inertia)
+      {
+        v_ghosted.reinit(owned_dofs, relevant_dofs, comm);
+        v_ghosted = velocity;
+      }
+    writer->write_fields(step,
+                         load_factor,
+                         dof_handler,
+                         mapping,
+                         u_ghosted,
+                         fields,
+                         inertia ? &v_ghosted : nullptr);
   }
 
   template <int dim>
@@ -706,15 +819,17 @@ namespace hyperelastic
   {
     setup();
     if (parameters.output.write_vtu)
-      {
-        const CellFields fields = compute_cell_fields(
-          dof_handler, mapping, *material, *material3d, u_ghosted);
-        writer->write_fields(0, 0., dof_handler, mapping, u_ghosted, fields);
-      }
+      write_fields(0);
 
-    const LoadStepper stepper(parameters.load_stepping,
-                              parameters.loading.n_load_steps,
-                              pcout);
+    const TimeIntegrationParameters &ti = parameters.time_integration;
+    const LoadStepper stepper =
+      ti.dynamic() ? LoadStepper(parameters.load_stepping,
+                                 ti.end_time,
+                                 ti.time_step,
+                                 pcout) :
+                     LoadStepper(parameters.load_stepping,
+                                 parameters.loading.n_load_steps,
+                                 pcout);
     stepper.run(newton,
                 *this,
                 [&](const LoadStep &step, const NewtonResult &result) {

@@ -11,6 +11,7 @@
 #include <hyperelastic/mesh/mesh_parameters.h>
 #include <hyperelastic/output/output_parameters.h>
 #include <hyperelastic/solvers/linear_solver_parameters.h>
+#include <hyperelastic/dynamics/time_integration_parameters.h>
 #include <hyperelastic/solvers/load_stepping_parameters.h>
 #include <hyperelastic/solvers/newton_parameters.h>
 
@@ -46,6 +47,7 @@ namespace hyperelastic
     LoadingParameters      loading;
     NewtonParameters       newton;
     LoadSteppingParameters load_stepping;
+    TimeIntegrationParameters time_integration;
     LinearSolverParameters linear_solver;
     OutputParameters       output;
 

@@ -13,6 +13,9 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/dynamics/inertia.h>
+#include <hyperelastic/dynamics/motion.h>
+#include <hyperelastic/dynamics/time_integrator.h>
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/output/cell_fields.h>
@@ -246,6 +249,23 @@ namespace hyperelastic
     void
     predict(double t);
     unsigned int secant_predictions = 0;
+
+    /// Implicit dynamics ('Time integration/Scheme' other than
+    /// quasi-static; nothing of it exists otherwise): the inertia term (owned
+    /// by the operator), the scheme, velocity and acceleration of the last
+    /// converged state, the momenta.
+    void
+    setup_dynamics();
+    /// The time step to t: the inertia term's target.
+    void
+    begin_time_step(double t);
+    InertiaTerm<dim>               *inertia = nullptr;
+    std::unique_ptr<TimeIntegrator> integrator;
+    std::unique_ptr<Motion<dim>>    motion;
+    VectorType velocity, acceleration, new_velocity, new_acceleration;
+    /// The end of the time step being solved (the load factor is the time
+    /// the equations are solved at: the midpoint for implicit midpoint).
+    double step_end_time = 0.;
 
     std::vector<StepSummary<dim>> step_summaries;
   };

@@ -63,7 +63,8 @@ namespace hyperelastic
                                   const DoFHandler<dim> &dof_handler,
                                   const Mapping<dim>    &mapping,
                                   const TrilinosWrappers::MPI::Vector &u,
-                                  const CellFields                    &fields)
+                                  const CellFields                    &fields,
+                                  const TrilinosWrappers::MPI::Vector *velocity)
   {
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
@@ -78,6 +79,14 @@ namespace hyperelastic
         interpretation.push_back(DataComponentInterpretation::component_is_scalar);
       }
     data_out.add_data_vector(u, field_names, DataOut<dim>::type_dof_data, interpretation);
+    if (velocity)
+      {
+        std::vector<std::string> velocity_names(dim, "velocity");
+        data_out.add_data_vector(*velocity,
+                                 velocity_names,
+                                 DataOut<dim>::type_dof_data,
+                                 interpretation);
+      }
     data_out.add_data_vector(fields.J, "J", DataOut<dim>::type_cell_data);
     data_out.add_data_vector(fields.energy_density,
                              "energy_density",
@@ -140,6 +149,15 @@ namespace hyperelastic
             csv << ",point" << k + 1 << "_u" << axes[d];
         if (s.has_pressure)
           csv << ",pressure_min,pressure_max";
+        if (s.dynamic)
+          {
+            csv << ",kinetic_energy,total_energy";
+            for (unsigned int d = 0; d < dim; ++d)
+              csv << ",momentum_" << axes[d];
+            if (dim == 3)
+              csv << ",angular_momentum_x,angular_momentum_y";
+            csv << ",angular_momentum_z";
+          }
         csv << '\n';
       }
     csv << s.step << ',' << std::setprecision(16) << s.load_factor << ','
@@ -157,6 +175,14 @@ namespace hyperelastic
         csv << ',' << displacement[d];
     if (s.has_pressure)
       csv << ',' << s.pressure_min << ',' << s.pressure_max;
+    if (s.dynamic)
+      {
+        csv << ',' << s.kinetic_energy << ',' << s.kinetic_energy + s.energy;
+        for (unsigned int d = 0; d < dim; ++d)
+          csv << ',' << s.linear_momentum[d];
+        for (unsigned int d = (dim == 3 ? 0 : 2); d < 3; ++d)
+          csv << ',' << s.angular_momentum[d];
+      }
     csv << std::endl;
   }
 

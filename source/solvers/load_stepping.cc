@@ -11,8 +11,22 @@ namespace hyperelastic
                            const unsigned int            n_nominal_steps,
                            dealii::ConditionalOStream    pcout)
       : parameters(parameters)
-      , n_nominal_steps(n_nominal_steps)
+      , end(1.)
+      , nominal(1. / n_nominal_steps)
       , pcout(pcout)
+      , label("Load step")
+  {
+  }
+
+  LoadStepper::LoadStepper(const LoadSteppingParameters &parameters,
+                           const double                  end,
+                           const double                  nominal_increment,
+                           dealii::ConditionalOStream    pcout)
+      : parameters(parameters)
+      , end(end)
+      , nominal(nominal_increment)
+      , pcout(pcout)
+      , label("Time step")
   {
   }
 
@@ -33,18 +47,17 @@ namespace hyperelastic
     const std::function<void(const LoadStep &, const NewtonResult &)>
       &on_converged) const
   {
-    const double nominal   = 1. / n_nominal_steps;
     double       t         = 0.;
     double       increment = nominal;
     LoadStep     step;
     unsigned int easy_steps_in_a_row = 0;
     system.store_converged_state();
-    while (t < 1.)
+    while (t < end)
       {
-        // Land exactly on t = 1 (no sliver of a last step).
+        // Land exactly on t = end (no sliver of a last step).
         const double t_next =
-          (t + increment > 1. - 1e-12 * nominal) ? 1. : t + increment;
-        pcout << "\nLoad step " << step.step + 1 << ": t = " << t_next
+          (t + increment > end - 1e-12 * nominal) ? end : t + increment;
+        pcout << "\n" << label << " " << step.step + 1 << ": t = " << t_next
               << " (increment " << t_next - t << ")" << std::endl;
         system.set_load_factor(t_next);
         NewtonResult result;

@@ -51,6 +51,15 @@ namespace hyperelastic
     bool
     is_conservative() const;
 
+    /// Adds a term made elsewhere (the inertia of a time step); the caller
+    /// may keep a pointer to it to update its state.
+    void
+    add_term(std::unique_ptr<LoadTerm<dim>> term)
+    {
+      (term->depends_on_solution() ? has_live_terms : has_dead_terms) = true;
+      terms.push_back(std::move(term));
+    }
+
     /// The load terms, in the order of the scene's sections.
     const std::vector<std::unique_ptr<LoadTerm<dim>>> &
     load_terms() const

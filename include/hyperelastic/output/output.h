@@ -47,6 +47,13 @@ namespace hyperelastic
     dealii::Tensor<1, dim> deformed_max;
     /// The displacement at each point of 'Output/Points', in their order.
     std::vector<dealii::Tensor<1, dim>> point_displacements;
+    /// Implicit dynamics: kinetic energy 1/2 v.M v, linear and angular
+    /// momentum (about the origin; 2D: z only); energy is then the
+    /// potential energy (strain energy minus the work of dead loads).
+    bool                 dynamic        = false;
+    double               kinetic_energy = 0.;
+    dealii::Tensor<1, 3> linear_momentum;
+    dealii::Tensor<1, 3> angular_momentum;
     /// The range of the pressure unknowns (mixed formulation only).
     bool   has_pressure = false;
     double pressure_min = 0.;
@@ -61,14 +68,16 @@ namespace hyperelastic
     OutputWriter(const OutputParameters &parameters, MPI_Comm comm);
 
     /// Writes <base>_<step>.<rank>.vtu, <base>_<step>.pvtu and rewrites
-    /// <base>.pvd. @p u must have ghost entries.
+    /// <base>.pvd. @p u (and @p velocity, written as the vector field
+    /// "velocity" if not null: dynamics) must have ghost entries.
     void
     write_fields(unsigned int                                 step,
                  double                                       load_factor,
                  const dealii::DoFHandler<dim>               &dof_handler,
                  const dealii::Mapping<dim>                  &mapping,
                  const dealii::TrilinosWrappers::MPI::Vector &u,
-                 const CellFields                            &fields);
+                 const CellFields                            &fields,
+                 const dealii::TrilinosWrappers::MPI::Vector *velocity = nullptr);
 
     /// Appends one row to <base>.csv (rank 0 writes).
     void

@@ -44,6 +44,13 @@ namespace hyperelastic
                 unsigned int                  n_nominal_steps,
                 dealii::ConditionalOStream    pcout);
 
+    /// The same control of a time variable t from 0 to @p end in steps of
+    /// @p nominal_increment (implicit dynamics: "Time step k").
+    LoadStepper(const LoadSteppingParameters &parameters,
+                double                        end,
+                double                        nominal_increment,
+                dealii::ConditionalOStream    pcout);
+
     /// Runs t from 0 to 1 and calls @p on_converged after each converged
     /// step. Throws ConvergenceFailure (with the last failure's reason) when
     /// the increment would fall below the minimum, or at the first failure
@@ -56,7 +63,10 @@ namespace hyperelastic
 
   private:
     const LoadSteppingParameters parameters;
-    const unsigned int           n_nominal_steps;
+    const double                 end;
+    const double                 nominal;
     dealii::ConditionalOStream   pcout;
+    /// "Load step" or "Time step".
+    const std::string label;
   };
 } // namespace hyperelastic

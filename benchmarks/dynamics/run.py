@@ -1,0 +1,167 @@
+#!/usr/bin/env python3
+"""Implicit dynamics benchmark: run time per simulated second against the
+trajectory error of a swinging cantilever's tip, for backward Euler,
+Newmark and implicit midpoint at several time steps.
+
+Scene: the bar [0,4] x [0,0.5] x [0,0.5] of 16 x 2 x 2 boxes (5 tetrahedra
+each), neo-Hookean E = 1, nu = 0.3, density 1, clamped at x = 0, released
+from rest under the body force 0; 0; -0.002 (parameters/
+swinging_cantilever_3d.prm on a shorter time), until t = 32. Reference: implicit midpoint with h = 0.0625.
+Error: the largest distance between the tip (point (4, 0.25, 0.25)) and the
+reference tip over the times t = 2, 4, ..., 32 (every run passes through
+them). Time: the whole process (2 MPI ranks, start-up included) divided by
+the simulated time.
+
+  /usr/bin/python3 benchmarks/dynamics/run.py          # runs (~3 min), CSV + PNG here
+  /usr/bin/python3 benchmarks/dynamics/run.py --plot   # redraw from the CSV
+
+Needs build/hyperelastic (Release) and python3-matplotlib.
+"""
+import argparse
+import csv
+import math
+import os
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+EXE = os.path.join(ROOT, "build", "hyperelastic")
+MPIRUN = os.path.join(ROOT, "scripts", "mpirun.sh")
+SCRATCH = "/tmp/dynamics_bench"
+END = 32.0
+SCHEMES = ["backward Euler", "Newmark", "implicit midpoint"]
+STEPS = [2.0, 1.0, 0.5, 0.25]
+REFERENCE = ("implicit midpoint", 0.0625)
+CSV_FILE = os.path.join(HERE, "dynamics.csv")
+PNG_FILE = os.path.join(HERE, "dynamics.png")
+
+
+def scene(scheme, h, out_dir):
+    return f"""subsection Problem
+  set Dimension = 3
+end
+subsection Mesh
+  set Upper corner = 4, 0.5, 0.5
+  set Subdivisions = 16, 2, 2
+end
+subsection Material
+  set Model           = neo-Hookean
+  set Young's modulus = 1
+  set Poisson's ratio = 0.3
+end
+subsection Loading
+  set Body force = 0; 0; -0.002
+end
+subsection Dirichlet 1
+  set Boundary id  = 0
+  set Components   = x, y, z
+  set Displacement = 0; 0; 0
+end
+subsection Time integration
+  set Scheme    = {scheme}
+  set Density   = 1
+  set Time step = {h!r}
+  set End time  = {END!r}
+end
+subsection Output
+  set Directory = {out_dir}
+  set Base name = run
+  set Write VTU = false
+  set Verbose   = false
+  set Points    = 4, 0.25, 0.25
+end
+"""
+
+
+def run(scheme, h):
+    name = "%s_h%g" % (scheme.replace(" ", "_"), h)
+    out_dir = os.path.join(SCRATCH, name)
+    os.makedirs(out_dir, exist_ok=True)
+    prm = os.path.join(SCRATCH, name + ".prm")
+    with open(prm, "w") as f:
+        f.write(scene(scheme, h, out_dir))
+    start = time.monotonic()
+    result = subprocess.run(["bash", MPIRUN, "-np", "2", EXE, prm],
+                            capture_output=True, text=True)
+    wall = time.monotonic() - start
+    if result.returncode != 0:
+        sys.exit("%s failed:\n%s" % (name, result.stdout[-2000:] + result.stderr[-2000:]))
+    rows = list(csv.DictReader(open(os.path.join(out_dir, "run.csv"))))
+    tip = {round(float(r["load_factor"]), 9): tuple(float(r["point1_u" + a]) for a in "xyz")
+           for r in rows}
+    newton = sum(int(r["newton_iterations"]) for r in rows)
+    return dict(scheme=scheme, h=h, wall=wall, steps=len(rows), newton=newton, tip=tip)
+
+
+def error(run_result, reference):
+    worst = 0.0
+    for k in range(1, int(END / 2) + 1):
+        t = round(2.0 * k, 9)
+        a, b = run_result["tip"][t], reference["tip"][t]
+        worst = max(worst, math.dist(a, b))
+    return worst
+
+
+def plot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = list(csv.DictReader(open(CSV_FILE)))
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    for scheme, marker in zip(SCHEMES, "osd"):
+        pts = [(float(r["seconds_per_simulated_second"]), float(r["tip_error"]),
+                float(r["time_step"])) for r in rows if r["scheme"] == scheme]
+        if not pts:
+            continue
+        ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker=marker, label=scheme)
+        for x, y, h in pts:
+            ax.annotate("h=%g" % h, (x, y), fontsize=7, xytext=(3, 3),
+                        textcoords="offset points")
+    ax.set_xlabel("wall seconds per simulated second (2 ranks, whole process)")
+    ax.set_ylabel("max tip distance to the reference, t = 2 .. 32")
+    ax.set_title("Swinging cantilever (neo-Hookean, 2,700 dofs)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(PNG_FILE, dpi=120)
+    print("wrote", PNG_FILE)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--plot", action="store_true", help="only redraw the figure")
+    args = parser.parse_args()
+    if args.plot:
+        plot()
+        return
+    if not os.path.exists(EXE):
+        sys.exit("missing %s (build first: scripts/build.sh)" % EXE)
+    reference = run(*REFERENCE)
+    rows = []
+    for scheme in SCHEMES:
+        for h in STEPS:
+            r = run(scheme, h)
+            e = error(r, reference)
+            rows.append(dict(scheme=scheme, time_step=h, steps=r["steps"],
+                             newton_iterations=r["newton"],
+                             newton_per_step="%.2f" % (r["newton"] / r["steps"]),
+                             wall_s="%.3f" % r["wall"],
+                             seconds_per_simulated_second="%.4f" % (r["wall"] / END),
+                             tip_error="%.3e" % e))
+            print("%-18s h = %-6g %4d steps %5.2f Newton/step %7.2f s  error %.3e"
+                  % (scheme, h, r["steps"], r["newton"] / r["steps"], r["wall"], e))
+    with open(CSV_FILE, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)
+    print("reference: %s h = %g, %.1f s" % (REFERENCE[0], REFERENCE[1], reference["wall"]))
+    try:
+        plot()
+    except ImportError:
+        print("matplotlib missing: no plot")
+
+
+if __name__ == "__main__":
+    main()

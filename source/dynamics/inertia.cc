@@ -1,0 +1,235 @@
+// The inertia term of an implicit time step: cell mass matrices from the
+// reference simplex's (the mapping is affine), forces, stiffness, potential.
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/lac/vector.h>
+
+#include <hyperelastic/dynamics/inertia.h>
+#include <hyperelastic/mesh/mesh_checks.h>
+
+#include <cmath>
+
+namespace hyperelastic
+{
+  using namespace dealii;
+
+  template <int dim>
+  InertiaTerm<dim>::InertiaTerm(const DoFHandler<dim> &dof_handler,
+                                const double           density,
+                                const bool             lumped)
+      : dof_handler(dof_handler)
+      , density(density)
+      , lumped(lumped)
+  {
+    const FiniteElement<dim> &base  = dof_handler.get_fe().base_element(0);
+    const unsigned int        n     = base.dofs_per_cell;
+    const QGaussSimplex<dim>  rule(base.degree + 1);
+    reference_mass.reinit(n, n);
+    for (unsigned int q = 0; q < rule.size(); ++q)
+      for (unsigned int a = 0; a < n; ++a)
+        for (unsigned int b = 0; b < n; ++b)
+          reference_mass(a, b) += base.shape_value(a, rule.point(q)) *
+                                  base.shape_value(b, rule.point(q)) *
+                                  rule.weight(q);
+    if (lumped)
+      {
+        // HRZ: the diagonal scaled to the element's mass (for P1 the row
+        // sums; for P2 it keeps every vertex mass positive).
+        double diagonal = 0., total = 0.;
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            diagonal += reference_mass(a, a);
+            for (unsigned int b = 0; b < n; ++b)
+              total += reference_mass(a, b);
+          }
+        for (unsigned int a = 0; a < n; ++a)
+          for (unsigned int b = 0; b < n; ++b)
+            reference_mass(a, b) =
+              a == b ? reference_mass(a, a) * total / diagonal : 0.;
+      }
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    target.reinit(dof_handler.locally_owned_dofs(),
+                  relevant,
+                  dof_handler.get_communicator());
+  }
+
+  template <int dim>
+  template <typename Worker>
+  void
+  InertiaTerm<dim>::for_each_cell(Worker &&worker) const
+  {
+    const FiniteElement<dim> &fe = dof_handler.get_fe();
+    const unsigned int        n  = fe.dofs_per_cell;
+    std::vector<types::global_dof_index> dofs(n);
+    FullMatrix<double>                   cell_mass(n, n);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          const double scale =
+            density * std::abs(simplex_measure<dim>([&](const unsigned int k)
+                                                      -> const Point<dim> & {
+                                 return cell->vertex(k);
+                               }).det);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const auto [ci, ki] = fe.system_to_component_index(i);
+              for (unsigned int j = 0; j < n; ++j)
+                {
+                  const auto [cj, kj] = fe.system_to_component_index(j);
+                  cell_mass(i, j) = (ci == cj && ci < dim) ?
+                                      scale * reference_mass(ki, kj) :
+                                      0.;
+                }
+            }
+          worker(dofs, cell_mass);
+        }
+  }
+
+  template <int dim>
+  void
+  InertiaTerm<dim>::set_step(const double c, const VectorType &w)
+  {
+    this->c = c;
+    target  = w;
+  }
+
+  template <int dim>
+  void
+  InertiaTerm<dim>::add_forces(const VectorType &u,
+                               const double,
+                               VectorType &forces) const
+  {
+    Vector<double> d, f;
+    for_each_cell([&](const auto &dofs, const FullMatrix<double> &m) {
+      d.reinit(dofs.size());
+      f.reinit(dofs.size());
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        d[i] = u(dofs[i]) - target(dofs[i]);
+      m.vmult(f, d);
+      f *= -c;
+      forces.add(dofs, f);
+    });
+  }
+
+  template <int dim>
+  void
+  InertiaTerm<dim>::add_load_stiffness(const VectorType &,
+                                       const double,
+                                       const AffineConstraints<double> &constraints,
+                                       MatrixType                      &matrix,
+                                       VectorType                      &rhs) const
+  {
+    FullMatrix<double> scaled;
+    for_each_cell([&](const auto &dofs, const FullMatrix<double> &m) {
+      scaled.reinit(m.m(), m.n());
+      scaled.add(c, m);
+      add_condensed(scaled, dofs, constraints, matrix, rhs);
+    });
+  }
+
+  template <int dim>
+  double
+  InertiaTerm<dim>::potential(const VectorType &u, const double) const
+  {
+    double         sum = 0.;
+    Vector<double> d, f;
+    for_each_cell([&](const auto &dofs, const FullMatrix<double> &m) {
+      d.reinit(dofs.size());
+      f.reinit(dofs.size());
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        d[i] = u(dofs[i]) - target(dofs[i]);
+      m.vmult(f, d);
+      sum += 0.5 * c * (d * f);
+    });
+    return Utilities::MPI::sum(sum, dof_handler.get_communicator());
+  }
+
+  template <int dim>
+  void
+  InertiaTerm<dim>::mass_product(const VectorType &v, VectorType &product) const
+  {
+    product = 0.;
+    Vector<double> d, f;
+    for_each_cell([&](const auto &dofs, const FullMatrix<double> &m) {
+      d.reinit(dofs.size());
+      f.reinit(dofs.size());
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        d[i] = v(dofs[i]);
+      m.vmult(f, d);
+      product.add(dofs, f);
+    });
+    product.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  InertiaTerm<dim>::solve_mass(const VectorType                &b,
+                               const AffineConstraints<double> &constraints,
+                               VectorType                      &x) const
+  {
+    // Jacobi-preconditioned CG; the mass matrix is well conditioned (its
+    // condition number does not grow with refinement), so a few tens of
+    // iterations reach round-off.
+    VectorType diagonal(b), r(b), z(b), p(b), q(b);
+    VectorType ghosted(target);
+    diagonal = 0.;
+    for_each_cell([&](const auto &dofs, const FullMatrix<double> &m) {
+      Vector<double> d(dofs.size());
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        d[i] = m(i, i);
+      diagonal.add(dofs, d);
+    });
+    diagonal.compress(VectorOperation::add);
+    const auto apply = [&](const VectorType &in, VectorType &out) {
+      ghosted = in;
+      mass_product(ghosted, out);
+      constraints.set_zero(out);
+    };
+    const auto precondition = [&](const VectorType &in, VectorType &out) {
+      out = in;
+      for (const auto i : out.locally_owned_elements())
+        out(i) = diagonal(i) > 0. ? in(i) / diagonal(i) : 0.;
+      constraints.set_zero(out);
+    };
+    x = 0.;
+    r = b;
+    constraints.set_zero(r);
+    const double target_norm = 1e-12 * r.l2_norm();
+    precondition(r, z);
+    p            = z;
+    double rho_k = r * z;
+    for (unsigned int k = 0; k < 1000 && r.l2_norm() > target_norm; ++k)
+      {
+        apply(p, q);
+        const double alpha = rho_k / (p * q);
+        x.add(alpha, p);
+        r.add(-alpha, q);
+        precondition(r, z);
+        const double rho_next = r * z;
+        p.sadd(rho_next / rho_k, 1., z);
+        rho_k = rho_next;
+      }
+    AssertThrow(!(r.l2_norm() > target_norm),
+                ExcMessage("the mass-matrix solve did not converge"));
+  }
+
+  template <int dim>
+  double
+  InertiaTerm<dim>::total_mass() const
+  {
+    double sum = 0.;
+    for_each_cell([&](const auto &dofs, const FullMatrix<double> &m) {
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        for (unsigned int j = 0; j < dofs.size(); ++j)
+          sum += m(i, j);
+    });
+    // Every component carries the mass once.
+    return Utilities::MPI::sum(sum, dof_handler.get_communicator()) / dim;
+  }
+
+  template class InertiaTerm<2>;
+  template class InertiaTerm<3>;
+} // namespace hyperelastic
