@@ -5,7 +5,9 @@
 // non-homogeneous clamped bar that is twisted, pulled, loaded by a body
 // force and by a traction, in 2D and 3D, P1 and (twisted) P2, and (twisted)
 // with the mixed formulation for every mixed element (decoupled neo-Hookean,
-// nu = 0.4999, direct solver; the pressure range is compared too).
+// nu = 0.4999, direct solver; the pressure range is compared too), and
+// (twisted, P1) in implicit dynamics with each scheme (kinetic energy and
+// linear and angular momentum compared too).
 //
 // Usage: mpirun -np N rank_invariance
 #include <deal.II/base/mpi.h>
@@ -33,7 +35,8 @@ namespace
         const bool         twisted,
         const unsigned int degree,
         const std::string &base_name,
-        const std::string &mixed_element = "")
+        const std::string &mixed_element = "",
+        const std::string &scheme        = "")
   {
     const bool  three = dim == 3;
     const bool  mixed = !mixed_element.empty();
@@ -82,6 +85,12 @@ namespace
         if (three)
           text += dirichlet(4, 4, "z", "0");
       }
+    if (!scheme.empty())
+      text += subsection("Time integration",
+                         entry("Scheme", scheme) + entry("Time step", "0.25") +
+                           entry("End time", "1") +
+                           entry("Initial velocity",
+                                 three ? "0; 0.1*x; 0.05*x" : "0; 0.1*x"));
     return text + tight_solver(mixed ? "direct" : "cg") +
            subsection("Output",
                       entry("Directory", "rank_invariance_output") +
@@ -135,6 +144,18 @@ namespace
             numbers.add(step + "pressure min", s.pressure_min);
             numbers.add(step + "pressure max", s.pressure_max);
           }
+        if (s.dynamic)
+          {
+            numbers.add(step + "kinetic energy", s.kinetic_energy);
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                numbers.add(step + "momentum " + std::string(1, "xyz"[d]),
+                            s.linear_momentum[d]);
+                numbers.add(step + "angular momentum " +
+                              std::string(1, "xyz"[d]),
+                            s.angular_momentum[d]);
+              }
+          }
       }
 
     // Displacements at a few vertices, wherever they are owned.
@@ -186,11 +207,19 @@ namespace
   compare(Checker           &checker,
           const bool         twisted,
           const unsigned int degree,
-          const std::string &mixed_element = "")
+          const std::string &mixed_element = "",
+          const std::string &scheme        = "")
   {
     std::string tag = std::to_string(dim) + "d_" +
                       (twisted ? "twisted" : "bar") + "_P" +
                       std::to_string(degree);
+    if (!scheme.empty())
+      {
+        tag += "_" + scheme;
+        for (char &c : tag)
+          if (c == ' ')
+            c = '_';
+      }
     if (!mixed_element.empty())
       {
         tag = std::to_string(dim) + "d_twisted_mixed_" + mixed_element;
@@ -205,12 +234,18 @@ namespace
                        twisted,
                        degree,
                        tag + "_np" + std::to_string(n_ranks),
-                       mixed_element),
+                       mixed_element,
+                       scheme),
                  MPI_COMM_WORLD);
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
         const Numbers serial =
-          solve<dim>(scene(dim, twisted, degree, tag + "_np1", mixed_element),
+          solve<dim>(scene(dim,
+                           twisted,
+                           degree,
+                           tag + "_np1",
+                           mixed_element,
+                           scheme),
                      MPI_COMM_SELF);
         // Relative to the largest number of the same kind, so that values
         // that are zero by symmetry are judged against the problem's scale.
@@ -254,6 +289,12 @@ main(int argc, char *argv[])
         {
           compare<2>(checker, true, 1, element);
           compare<3>(checker, true, 1, element);
+        }
+      for (const std::string scheme :
+           {"backward Euler", "Newmark", "implicit midpoint"})
+        {
+          compare<2>(checker, true, 1, "", scheme);
+          compare<3>(checker, true, 1, "", scheme);
         }
     },
     MPI_COMM_WORLD);
