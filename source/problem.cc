@@ -368,7 +368,10 @@ namespace hyperelastic
   bool
   Problem<dim>::is_linear() const
   {
-    return material->is_linear();
+    // 'Linearize once per step' treats each time step as linear: one full
+    // step is accepted.
+    return material->is_linear() ||
+           (inertia && parameters.time_integration.linearize_once);
   }
 
   template <int dim>

@@ -16,10 +16,19 @@
 //               momentum constant to 1e-10 of its size; the drift of the
 //               total energy (not conserved by midpoint in a nonlinear
 //               problem) below 2e-3 (observed 5.7e-4 in 2D, 8.3e-4 in 3D);
+//   damped      a neo-Hookean block glued to the floor under gravity, with
+//               mass damping, backward Euler to t = 40: ends at the
+//               quasi-static equilibrium of the same scene (1e-6);
+//   linearized  a cantilever swinging under gravity (neo-Hookean, Newmark)
+//               with 'Linearize once per step': one Newton iteration in
+//               every step (full Newton takes more), and the tip within 2 %
+//               of the tip deflection of full Newton;
 //   vibration   a nu = 0 bar clamped at x = 0, released in its first mode
 //               (v_x = V sin(pi x / 2L)), linear elastic, Newmark with the
 //               consistent mass: the period of the tip motion against
-//               4 L sqrt(rho / E) within 1 %.
+//               4 L sqrt(rho / E) within 1 %;
+//   vibration_order  the period error of that bar converges at order 2 (at
+//               least 1.8) in the time step and in the element size.
 //
 // Usage: mpirun -np N dynamics CASE DIM
 #include <deal.II/base/mpi.h>
@@ -250,18 +259,106 @@ namespace
 
   template <int dim>
   void
-  vibration(Checker &checker)
+  damped(Checker &checker)
   {
-    // T = 4 L sqrt(rho / E) = 4; 16 elements along the bar, 64 steps per
-    // period.
-    const double L = 1., T = 4., V = 0.01, h = T / 64.;
+    const bool        three = dim == 3;
+    const std::string statics =
+      block<dim>("neo-Hookean") +
+      subsection("Loading",
+                 entry("Number of load steps", "2") +
+                   entry("Body force", three ? "0; 0; -0.1" : "0; -0.1")) +
+      dirichlet(1, three ? 4 : 2, three ? "x, y, z" : "x, y",
+                three ? "0; 0; 0" : "0; 0");
+    auto equilibrium = run<dim>(statics);
+    auto settled     = run<dim>(
+      statics + subsection("Time integration",
+                           entry("Scheme", "backward Euler") +
+                             entry("Time step", "0.5") +
+                             entry("End time", "40") +
+                             entry("Mass damping", "2")));
+    const VectorType &a = settled->solution(), &b = equilibrium->solution();
+    double difference = 0., size = 0.;
+    for (const auto i : a.locally_owned_elements())
+      {
+        difference = std::max(difference, std::abs(a(i) - b(i)));
+        size       = std::max(size, std::abs(b(i)));
+      }
+    difference = Utilities::MPI::max(difference, MPI_COMM_WORLD);
+    size       = Utilities::MPI::max(size, MPI_COMM_WORLD);
+    checker.at_most(std::to_string(dim) +
+                      "D backward Euler, mass damping 2, t = 40: |u - "
+                      "u_static|_max / |u_static|_max",
+                    difference / size,
+                    1e-6);
+  }
+
+  template <int dim>
+  void
+  linearized(Checker &checker)
+  {
+    const bool        three = dim == 3;
+    const std::string scene =
+      subsection("Problem", entry("Dimension", std::to_string(dim))) +
+      subsection("Mesh",
+                 entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
+                   entry("Upper corner", three ? "4, 0.5, 0.5" : "4, 0.5") +
+                   entry("Subdivisions", three ? "8, 1, 1" : "16, 2")) +
+      subsection("Material",
+                 entry("Model", "neo-Hookean") + entry("Young's modulus", "1") +
+                   entry("Poisson's ratio", "0.3")) +
+      subsection("Loading",
+                 entry("Body force", three ? "0; 0; -0.002" : "0; -0.002")) +
+      dirichlet(1, 0, three ? "x, y, z" : "x, y", three ? "0; 0; 0" : "0; 0") +
+      tight_solver("direct") +
+      subsection("Output",
+                 entry("Directory", "dynamics_output") +
+                   entry("Write VTU", "false") + entry("Verbose", "false") +
+                   entry("Points", three ? "4, 0.25, 0.25" : "4, 0.25"));
+    const std::string time =
+      entry("Scheme", "Newmark") + entry("Time step", "1") +
+      entry("End time", "24");
+    auto full = run<dim>(scene + subsection("Time integration", time));
+    auto once = run<dim>(
+      scene + subsection("Time integration",
+                         time + entry("Linearize once per step", "true")));
+    unsigned int most = 0, least_full = 1000;
+    for (const auto &s : once->summaries())
+      most = std::max(most, s.newton_iterations);
+    for (const auto &s : full->summaries())
+      least_full = std::min(least_full, s.newton_iterations);
+    const std::string tag = std::to_string(dim) + "D Newmark, neo-Hookean: ";
+    checker.is_true(tag + "linearized: one Newton iteration per step (full "
+                          "Newton: at least " +
+                      std::to_string(least_full) + ")",
+                    most == 1 && least_full > 1);
+    const double tip_full = full->summaries().back().point_displacements[0][dim - 1];
+    const double tip_once = once->summaries().back().point_displacements[0][dim - 1];
+    checker.close(tag + "tip deflection at t = 24, linearized vs full Newton",
+                  tip_once,
+                  tip_full,
+                  std::abs(tip_full),
+                  2e-2);
+  }
+
+  /// The first-mode period of the nu = 0 bar [0, 1] (clamped at x = 0,
+  /// released with v_x = V sin(pi x / 2)) on @p n elements along it, with
+  /// Newmark and @p steps_per_period time steps per exact period 4: twice
+  /// the time between the first two zero crossings of the tip motion
+  /// (linear interpolation between steps; at a crossing the motion has no
+  /// curvature, so the interpolation error is third order).
+  template <int dim>
+  double
+  vibration_period(const unsigned int n, const unsigned int steps_per_period)
+  {
+    const double T = 4., V = 0.01, h = T / steps_per_period;
     const bool   three = dim == 3;
     const std::string text =
       subsection("Problem", entry("Dimension", std::to_string(dim))) +
       subsection("Mesh",
                  entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
                    entry("Upper corner", three ? "1, 0.1, 0.1" : "1, 0.1") +
-                   entry("Subdivisions", three ? "16, 1, 1" : "16, 1")) +
+                   entry("Subdivisions",
+                         std::to_string(n) + (three ? ", 1, 1" : ", 1"))) +
       subsection("Material",
                  entry("Model", "linear elastic") +
                    entry("Young's modulus", "1") +
@@ -272,39 +369,70 @@ namespace
                    "consistent",
                    1.,
                    h,
-                   1.25 * T,
+                   0.625 * T * 2.,
                    number(V) + "*sin(pi*x/2)" + (three ? "; 0; 0" : "; 0")) +
       subsection("Output",
                  entry("Directory", "dynamics_output") +
                    entry("Write VTU", "false") + entry("Verbose", "false") +
                    entry("Points", three ? "1, 0.05, 0.05" : "1, 0.05"));
-    auto        problem = run<dim>(text);
-    const auto &steps   = problem->summaries();
-    // Downward zero crossings of the tip displacement: at T/2 and, after
-    // the upward one at T, ... ; the time between the first downward and
-    // the next upward crossing is T/2, between two crossings of the same
-    // sign T.
+    auto                problem = run<dim>(text);
     std::vector<double> crossings;
     double              t_prev = 0., u_prev = 0.;
-    for (const auto &s : steps)
+    for (const auto &s : problem->summaries())
       {
         const double u = s.point_displacements[0][0];
-        if (t_prev > 0. && ((u_prev > 0. && u <= 0.) || (u_prev < 0. && u >= 0.)))
+        if (t_prev > 0. &&
+            ((u_prev > 0. && u <= 0.) || (u_prev < 0. && u >= 0.)))
           crossings.push_back(t_prev + (s.load_factor - t_prev) * u_prev /
                                          (u_prev - u));
         t_prev = s.load_factor;
         u_prev = u;
       }
-    checker.at_least("zero crossings of the tip motion", crossings.size(), 2);
-    if (crossings.size() < 2)
-      return;
-    const double period = 2. * (crossings[1] - crossings[0]);
+    AssertThrow(crossings.size() >= 2,
+                ExcMessage("fewer than two zero crossings of the tip"));
+    return 2. * (crossings[1] - crossings[0]);
+  }
+
+  template <int dim>
+  void
+  vibration(Checker &checker)
+  {
+    // 16 elements along the bar, 64 steps per period.
     checker.close(std::to_string(dim) + "D Newmark: period of the first mode "
                   "against 4 L sqrt(rho/E)",
-                  period,
-                  4. * L,
-                  4. * L,
+                  vibration_period<dim>(16, 64),
+                  4.,
+                  4.,
                   1e-2);
+  }
+
+  /// Orders of the period error: in the time step (16 elements; 16, 32, 64
+  /// steps per period against 512) and in the element size (8, 16, 32
+  /// elements at 1024 steps per period, against the exact 4).
+  template <int dim>
+  void
+  vibration_order(Checker &checker)
+  {
+    const std::string tag = std::to_string(dim) + "D Newmark: ";
+    const double      fine = vibration_period<dim>(16, 512);
+    std::vector<double> dt_errors;
+    for (const unsigned int steps : {16u, 32u, 64u})
+      dt_errors.push_back(std::abs(vibration_period<dim>(16, steps) - fine));
+    for (unsigned int k = 0; k + 1 < dt_errors.size(); ++k)
+      checker.at_least(tag + "order of the period error in the time step (" +
+                         std::to_string(16 << k) + " -> " +
+                         std::to_string(32 << k) + " steps per period)",
+                       std::log2(dt_errors[k] / dt_errors[k + 1]),
+                       1.8);
+    std::vector<double> h_errors;
+    for (const unsigned int n : {8u, 16u, 32u})
+      h_errors.push_back(std::abs(vibration_period<dim>(n, 1024) - 4.));
+    for (unsigned int k = 0; k + 1 < h_errors.size(); ++k)
+      checker.at_least(tag + "order of the period error in the element size (" +
+                         std::to_string(8 << k) + " -> " +
+                         std::to_string(16 << k) + " elements)",
+                       std::log2(h_errors[k] / h_errors[k + 1]),
+                       1.8);
   }
 
   template <int dim>
@@ -319,8 +447,14 @@ namespace
       energy<dim>(checker);
     else if (which == "angular")
       angular<dim>(checker);
+    else if (which == "damped")
+      damped<dim>(checker);
+    else if (which == "linearized")
+      linearized<dim>(checker);
     else if (which == "vibration")
       vibration<dim>(checker);
+    else if (which == "vibration_order")
+      vibration_order<dim>(checker);
     else
       throw std::runtime_error("unknown case " + which);
   }

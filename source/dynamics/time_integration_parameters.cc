@@ -80,6 +80,15 @@ namespace hyperelastic
                       Integer(1),
                       "Write the VTU files every this many time steps (and "
                       "the last one); the CSV has every step.");
+    prm.declare_entry(
+      "Linearize once per step",
+      "false",
+      Bool(),
+      "true: each time step is one linear solve with the tangent at the "
+      "step's start (the semi-implicit step of Muller et al. 2002, cheap "
+      "for animation), accepted without a convergence test unless the line "
+      "search shortens it (then Newton continues until a full step is "
+      "taken). false: Newton to the Newton subsection's tolerances.");
     prm.leave_subsection();
   }
 
@@ -100,6 +109,7 @@ namespace hyperelastic
     mass_damping      = get_finite(prm, "Time integration", "Mass damping");
     stiffness_damping = get_finite(prm, "Time integration", "Stiffness damping");
     output_every      = prm.get_integer("Output every");
+    linearize_once    = prm.get_bool("Linearize once per step");
     prm.leave_subsection();
     if (!dynamic())
       return;

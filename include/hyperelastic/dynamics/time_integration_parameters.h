@@ -33,6 +33,9 @@ namespace hyperelastic
     double                   mass_damping      = 0.; ///< Rayleigh a: C = a M + b K0
     double                   stiffness_damping = 0.; ///< Rayleigh b
     unsigned int             output_every      = 1;
+    /// One linearised solve per time step (the semi-implicit step of
+    /// Muller et al. 2002) instead of Newton to convergence.
+    bool linearize_once = false;
 
     bool
     dynamic() const
