@@ -97,21 +97,34 @@ namespace hyperelastic
   }
 
   template <int dim>
+  template <typename Worker>
+  void
+  InertiaTerm<dim>::for_each_cell_product(const VectorType &v,
+                                          const VectorType *subtracted,
+                                          Worker          &&worker) const
+  {
+    Vector<double> d, product;
+    for_each_cell([&](const auto &dofs, const FullMatrix<double> &m) {
+      d.reinit(dofs.size());
+      product.reinit(dofs.size());
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        d[i] = v(dofs[i]) - (subtracted ? (*subtracted)(dofs[i]) : 0.);
+      m.vmult(product, d);
+      worker(dofs, d, product);
+    });
+  }
+
+  template <int dim>
   void
   InertiaTerm<dim>::add_forces(const VectorType &u,
                                const double,
                                VectorType &forces) const
   {
-    Vector<double> d, f;
-    for_each_cell([&](const auto &dofs, const FullMatrix<double> &m) {
-      d.reinit(dofs.size());
-      f.reinit(dofs.size());
-      for (unsigned int i = 0; i < dofs.size(); ++i)
-        d[i] = u(dofs[i]) - target(dofs[i]);
-      m.vmult(f, d);
-      f *= -c;
-      forces.add(dofs, f);
-    });
+    for_each_cell_product(
+      u, &target, [&](const auto &dofs, const auto &, Vector<double> &Md) {
+        Md *= -c;
+        forces.add(dofs, Md);
+      });
   }
 
   template <int dim>
@@ -134,16 +147,13 @@ namespace hyperelastic
   double
   InertiaTerm<dim>::potential(const VectorType &u, const double) const
   {
-    double         sum = 0.;
-    Vector<double> d, f;
-    for_each_cell([&](const auto &dofs, const FullMatrix<double> &m) {
-      d.reinit(dofs.size());
-      f.reinit(dofs.size());
-      for (unsigned int i = 0; i < dofs.size(); ++i)
-        d[i] = u(dofs[i]) - target(dofs[i]);
-      m.vmult(f, d);
-      sum += 0.5 * c * (d * f);
-    });
+    double sum = 0.;
+    for_each_cell_product(
+      u,
+      &target,
+      [&](const auto &, const Vector<double> &d, const Vector<double> &Md) {
+        sum += 0.5 * c * (d * Md);
+      });
     return Utilities::MPI::sum(sum, dof_handler.get_communicator());
   }
 
@@ -152,15 +162,10 @@ namespace hyperelastic
   InertiaTerm<dim>::mass_product(const VectorType &v, VectorType &product) const
   {
     product = 0.;
-    Vector<double> d, f;
-    for_each_cell([&](const auto &dofs, const FullMatrix<double> &m) {
-      d.reinit(dofs.size());
-      f.reinit(dofs.size());
-      for (unsigned int i = 0; i < dofs.size(); ++i)
-        d[i] = v(dofs[i]);
-      m.vmult(f, d);
-      product.add(dofs, f);
-    });
+    for_each_cell_product(
+      v, nullptr, [&](const auto &dofs, const auto &, const Vector<double> &Mv) {
+        product.add(dofs, Mv);
+      });
     product.compress(VectorOperation::add);
   }
 

@@ -84,6 +84,14 @@ namespace hyperelastic
     void
     for_each_cell(Worker &&worker) const;
 
+    /// Calls @p worker(cell dofs, d, M_cell d) for every owned cell, with
+    /// d the cell's values of @p v minus those of @p subtracted (if any).
+    template <typename Worker>
+    void
+    for_each_cell_product(const VectorType &v,
+                          const VectorType *subtracted,
+                          Worker          &&worker) const;
+
     const dealii::DoFHandler<dim> &dof_handler;
     const double                   density;
     const bool                     lumped;
