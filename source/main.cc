@@ -16,8 +16,9 @@ namespace
     "                                          default and documentation\n"
     "       hyperelastic --help\n"
     "\n"
-    "Solves a quasi-static hyperelastic problem on a simplex mesh with\n"
-    "Newton's method, writing ParaView files and a CSV summary per load step.\n"
+    "Solves a hyperelastic problem on a simplex mesh with Newton's method,\n"
+    "quasi-static (load steps) or in time (Time integration/Scheme), writing\n"
+    "ParaView files and a CSV summary per load or time step.\n"
     "Exit status: 0 success, 1 input error, 2 internal error, 3 convergence\n"
     "failure.\n";
 } // namespace
