@@ -570,6 +570,8 @@ namespace hyperelastic
         v0->set_time(0.);
         VectorTools::interpolate(mapping, dof_handler, *v0, velocity);
       }
+    velocity_ghosted.reinit(owned_dofs, relevant_dofs, comm);
+    velocity_ghosted = velocity;
     if (ti.scheme == TimeScheme::newmark)
       {
         // M a_0 = f_ext(0) - f_int(u_0) on the free dofs (the inertia term's
@@ -644,6 +646,7 @@ namespace hyperelastic
                                 new_acceleration);
         velocity.swap(new_velocity);
         acceleration.swap(new_acceleration);
+        velocity_ghosted = velocity;
       }
     std::swap(previous, converged);
     converged.valid         = true;
@@ -687,9 +690,7 @@ namespace hyperelastic
         // Potential energy without the step's inertia term; kinetic energy
         // and momenta of the converged motion.
         s.energy -= inertia->potential(u_ghosted, load_factor);
-        VectorType v_ghosted(u_ghosted);
-        v_ghosted            = velocity;
-        const MotionMeasures m = motion->measure(u_ghosted, v_ghosted);
+        const MotionMeasures m = motion->measure(u_ghosted, velocity_ghosted);
         s.dynamic            = true;
         s.kinetic_energy     = m.kinetic_energy;
         s.linear_momentum    = m.linear_momentum;
@@ -766,20 +767,13 @@ namespace hyperelastic
     TimerOutput::Scope output_scope(timer, "output");
     const CellFields   fields = compute_cell_fields(
       dof_handler, mapping, *material, *material3d, u_ghosted);
-    // In dynamics the velocity too.
-    VectorType v_ghosted;
-    if (inertia)
-      {
-        v_ghosted.reinit(owned_dofs, relevant_dofs, comm);
-        v_ghosted = velocity;
-      }
     writer->write_fields(step,
                          load_factor,
                          dof_handler,
                          mapping,
                          u_ghosted,
                          fields,
-                         inertia ? &v_ghosted : nullptr);
+                         inertia ? &velocity_ghosted : nullptr);
   }
 
   template <int dim>

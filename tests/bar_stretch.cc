@@ -38,14 +38,6 @@ namespace
   double mu = 1., lambda = 1.;
   bool   fine = false;
 
-  std::string
-  number(const double x)
-  {
-    std::ostringstream s;
-    s << std::setprecision(17) << x;
-    return s.str();
-  }
-
   /// Boundary id of the box face k (0: x = 0, 1: x = L, 2: y = 0, ...) is
   /// k + id_offset.
   int

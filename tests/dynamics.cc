@@ -57,14 +57,6 @@ namespace
   const std::vector<std::string> masses  = {"consistent", "lumped"};
 
   std::string
-  number(const double x)
-  {
-    std::ostringstream s;
-    s << std::setprecision(17) << x;
-    return s.str();
-  }
-
-  std::string
   time_section(const std::string &scheme,
                const std::string &mass,
                const double       density,

@@ -49,14 +49,6 @@ namespace
                               {0.05, 0.26, 1.03}};
   constexpr double c[3]    = {0.01, -0.02, 0.03};
 
-  std::string
-  number(const double x)
-  {
-    std::ostringstream s;
-    s << std::setprecision(17) << x;
-    return s.str();
-  }
-
   /// G scaled to det F = @p J.
   template <int dim>
   Tensor<2, dim>

@@ -263,6 +263,9 @@ namespace hyperelastic
     std::unique_ptr<TimeIntegrator> integrator;
     std::unique_ptr<Motion<dim>>    motion;
     VectorType velocity, acceleration, new_velocity, new_acceleration;
+    /// The velocity with ghost entries (momenta and VTU), set once per
+    /// converged step.
+    VectorType velocity_ghosted;
     /// The end of the time step being solved (the load factor is the time
     /// the equations are solved at: the midpoint for implicit midpoint).
     double step_end_time = 0.;

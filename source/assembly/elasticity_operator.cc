@@ -22,8 +22,10 @@ namespace hyperelastic
       , generic(material_part ? std::move(material_part) :
                                 std::make_unique<GenericAssembler<dim>>(
                                   dof_handler, mapping, material))
-      , terms(create_load_terms(boundary_conditions, dof_handler, mapping))
   {
+    for (auto &term :
+         create_load_terms(boundary_conditions, dof_handler, mapping))
+      add_term(std::move(term));
     if (fast_p1 && dof_handler.get_fe().degree == 1 &&
         dof_handler.get_fe().n_components() == dim)
       {
@@ -31,8 +33,6 @@ namespace hyperelastic
         if (kernel->usable())
           p1 = std::move(kernel);
       }
-    for (const auto &term : terms)
-      (term->depends_on_solution() ? has_live_terms : has_dead_terms) = true;
   }
 
   template <int dim>

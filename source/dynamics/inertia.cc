@@ -221,20 +221,6 @@ namespace hyperelastic
                 ExcMessage("the mass-matrix solve did not converge"));
   }
 
-  template <int dim>
-  double
-  InertiaTerm<dim>::total_mass() const
-  {
-    double sum = 0.;
-    for_each_cell([&](const auto &dofs, const FullMatrix<double> &m) {
-      for (unsigned int i = 0; i < dofs.size(); ++i)
-        for (unsigned int j = 0; j < dofs.size(); ++j)
-          sum += m(i, j);
-    });
-    // Every component carries the mass once.
-    return Utilities::MPI::sum(sum, dof_handler.get_communicator()) / dim;
-  }
-
   template class InertiaTerm<2>;
   template class InertiaTerm<3>;
 } // namespace hyperelastic

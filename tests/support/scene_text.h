@@ -3,6 +3,7 @@
 
 #include <hyperelastic/materials/material_registry.h>
 
+#include <iomanip>
 #include <sstream>
 #include <string>
 
@@ -18,6 +19,16 @@ namespace hyperelastic::testing
   entry(const std::string &name, const std::string &value)
   {
     return "  set " + name + " = " + value + "\n";
+  }
+
+  /// @p x with all 17 significant digits (std::to_string keeps 6
+  /// decimals), for entries that must be exact.
+  inline std::string
+  number(const double x)
+  {
+    std::ostringstream s;
+    s << std::setprecision(17) << x;
+    return s.str();
   }
 
   /// The Material section for any registered @p model: the shared

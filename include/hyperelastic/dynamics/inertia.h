@@ -73,10 +73,6 @@ namespace hyperelastic
                const dealii::AffineConstraints<double> &constraints,
                VectorType                              &x) const;
 
-    /// The total mass (sum over the cells of rho |T|).
-    double
-    total_mass() const;
-
   private:
     /// Calls @p worker(cell dofs, cell mass matrix) for every owned cell;
     /// the matrix couples only equal displacement components.
