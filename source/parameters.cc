@@ -168,10 +168,22 @@ namespace hyperelastic
                  size(c.expressions) + " expressions",
                  "needs one expression");
       }
+    // Stiffness warping rotates the rest stiffness per vertex: P1 nodes
+    // only, no pressure unknown.
+    if (material.stiffness_warping && problem.mixed)
+      reject("Problem/Formulation",
+             "mixed",
+             "'Material/Model = stiffness warping' works with the "
+             "displacement formulation only");
+    if (material.stiffness_warping && problem.fe_degree != 1)
+      reject("Problem/Finite element degree",
+             std::to_string(problem.fe_degree),
+             "'Material/Model = stiffness warping' needs P1 elements (one "
+             "rotation per vertex)");
     // The mixed formulation needs the model's volumetric split.
     if (problem.mixed)
       {
-        if (!material_model(material.model).has_volumetric_split)
+        if (!material_model(material.registered_model()).has_volumetric_split)
           {
             std::string with_split;
             for (const MaterialModel &m : material_models())
@@ -202,7 +214,7 @@ namespace hyperelastic
     if (newton.inverted_elements == InvertedElements::warn)
       {
         const bool defined =
-          material_model(material.model).defined_for_inverted_elements;
+          material_model(material.registered_model()).defined_for_inverted_elements;
         if (!defined)
           reject("Newton/Inverted elements at equilibrium",
                  "warn",

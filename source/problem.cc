@@ -9,6 +9,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <hyperelastic/assembly/mixed_assembler.h>
+#include <hyperelastic/assembly/warped_assembler.h>
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/mesh.h>
 #include <hyperelastic/output/inverted_cells.h>
@@ -36,6 +37,25 @@ namespace hyperelastic
         dim,
         FE_SimplexP<dim>(1),
         1);
+    }
+
+    /// The material part that replaces the P1 kernel and the generic
+    /// loops, if the scene asks for one (null otherwise).
+    template <int dim>
+    std::unique_ptr<Assembler<dim>>
+    make_material_part(const Parameters      &parameters,
+                       const DoFHandler<dim> &dof_handler,
+                       const Mapping<dim>    &mapping,
+                       const Material<dim>   &material)
+    {
+      if (parameters.problem.mixed)
+        return std::make_unique<MixedAssembler<dim>>(
+          dof_handler, mapping, material, parameters.problem.mixed_element);
+      if (parameters.material.stiffness_warping)
+        return std::make_unique<WarpedAssembler<dim>>(dof_handler,
+                                                      mapping,
+                                                      material);
+      return nullptr;
     }
 
     std::string
@@ -165,12 +185,7 @@ namespace hyperelastic
       *material,
       *boundary_conditions,
       parameters.problem.fast_p1_assembly,
-      parameters.problem.mixed ?
-        std::make_unique<MixedAssembler<dim>>(dof_handler,
-                                              mapping,
-                                              *material,
-                                              parameters.problem.mixed_element) :
-        nullptr);
+      make_material_part(parameters, dof_handler, mapping, *material));
     if (parameters.time_integration.dynamic())
       setup_dynamics();
     // A load without a potential makes the tangent non-symmetric.
@@ -235,7 +250,11 @@ namespace hyperelastic
     pcout << triangulation.n_global_active_cells() << " cells, "
           << dof_handler.n_dofs() << " unknowns, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n"
-          << "material: " << material->name()
+          << "material: " << parameters.material.model
+          << (parameters.material.stiffness_warping ?
+                " of the linear elastic stiffness (no potential; energy and "
+                "cell stresses: corotational)" :
+                "")
           << " (mu = " << material->small_strain_moduli().mu
           << ", lambda = " << material->small_strain_moduli().lambda << ")\n"
           << "linear solver: " << linear_solver.description() << std::endl;
@@ -387,9 +406,11 @@ namespace hyperelastic
   std::string
   Problem<dim>::why_no_potential() const
   {
-    return parameters.problem.mixed ?
-             "the mixed functional is a saddle point in the pressure" :
-             "a load has no potential";
+    if (parameters.problem.mixed)
+      return "the mixed functional is a saddle point in the pressure";
+    if (parameters.material.stiffness_warping)
+      return "stiffness warping's forces are not the gradient of an energy";
+    return "a load has no potential";
   }
 
   template <int dim>
@@ -506,7 +527,7 @@ namespace hyperelastic
     if (parameters.newton.accepts_inverted_elements(defined))
       {
         pcout << "   warning: equilibrium with " << where.str()
-              << ", accepted: the " << material->name()
+              << ", accepted: the " << parameters.material.model
               << " model is defined there ('Newton/Inverted elements at "
                  "equilibrium = warn')"
               << std::endl;
@@ -517,11 +538,11 @@ namespace hyperelastic
     if (defined)
       message << ", rejected by 'Newton/Inverted elements at equilibrium = "
                  "reject'; the "
-              << material->name()
+              << parameters.material.model
               << " model is defined for J <= 0 and this can be its correct "
                  "discrete answer: set that entry to 'warn' to accept it";
     else
-      message << ", where the " << material->name()
+      message << ", where the " << parameters.material.model
               << " model is not defined (infinite energy): not a solution; "
                  "keep 'Newton/Line search = true' (its J > 0 filter keeps "
                  "this model's iterates admissible) or use a model defined "

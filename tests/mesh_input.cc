@@ -13,7 +13,11 @@
 //    volume (both naming the gmsh element), a missing file.
 // 3. Distribution: a rank other than the reader builds no serial mesh, and
 //    (without refinement) constructs exactly its own cells plus ghosts; with
-//    a global refinement, fewer cells than the whole mesh.
+//    a global refinement, fewer cells than the whole mesh. The faces where
+//    a rank's ghost layer ends carry partition_edge_boundary_id (deal.II
+//    would give them id 0, and a Dirichlet condition on id 0 would
+//    constrain the ghost dofs there); every other boundary face lies on the
+//    mesh's surface.
 // 4. The distributed triangulation equals deal.II's own reading (GridIn) of
 //    the file cell by cell: vertices in the same order, material and
 //    boundary ids (gmsh formats 2 and 4, mixed vertex order).
@@ -28,6 +32,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/mesh.h>
+#include <hyperelastic/mesh/mesh_distribution.h>
 #include <hyperelastic/problem.h>
 
 #include "support/checker.h"
@@ -38,6 +43,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <tuple>
 
@@ -416,6 +422,53 @@ namespace
           ok = ok && !stats.reader && stats.serial_cells == 0 &&
                tria.n_active_cells() < global &&
                (refinements > 0 || tria.n_active_cells() == owned + ghost);
+        // Boundary faces of the local part: on the bar's surface (its
+        // bounding box), or where the ghost layer ends, marked as such (not
+        // boundary id 0, which a Dirichlet condition could name).
+        Point<dim> lower, upper;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            lower[c] = std::numeric_limits<double>::max();
+            upper[c] = -std::numeric_limits<double>::max();
+          }
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                lower[c] = std::min(lower[c], cell->vertex(v)[c]);
+                upper[c] = std::max(upper[c], cell->vertex(v)[c]);
+              }
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            lower[c] = Utilities::MPI::min(lower[c], comm);
+            upper[c] = Utilities::MPI::max(upper[c], comm);
+          }
+        unsigned int edges = 0, misplaced = 0;
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const Point<dim> x       = cell->face(f)->center();
+                bool             surface = false;
+                for (unsigned int c = 0; c < dim; ++c)
+                  surface = surface || std::abs(x[c] - lower[c]) < 1e-9 ||
+                            std::abs(x[c] - upper[c]) < 1e-9;
+                if (cell->face(f)->boundary_id() == partition_edge_boundary_id)
+                  {
+                    ++edges;
+                    misplaced += surface ? 1 : 0;
+                  }
+                else
+                  misplaced += surface ? 0 : 1;
+              }
+        edges     = Utilities::MPI::sum(edges, comm);
+        misplaced = Utilities::MPI::sum(misplaced, comm);
+        if (refinements == 0)
+          checker.is_true(d + ": boundary faces of every part on the bar's "
+                              "surface or marked as the ghost layer's end (" +
+                            std::to_string(edges) + " marked, " +
+                            std::to_string(misplaced) + " misplaced)",
+                          misplaced == 0 && (n_ranks == 1 || edges > 0));
         const bool all = Utilities::MPI::min(ok ? 1 : 0, comm) == 1;
         checker.is_true(d + ", " + std::to_string(refinements) +
                           " refinement(s): only rank 0 built the whole mesh" +

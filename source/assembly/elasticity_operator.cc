@@ -19,6 +19,7 @@ namespace hyperelastic
     const bool                     fast_p1,
     std::unique_ptr<Assembler<dim>> material_part)
       : dof_handler(dof_handler)
+      , replaced(material_part != nullptr)
       , generic(material_part ? std::move(material_part) :
                                 std::make_unique<GenericAssembler<dim>>(
                                   dof_handler, mapping, material))
@@ -26,7 +27,7 @@ namespace hyperelastic
     for (auto &term :
          create_load_terms(boundary_conditions, dof_handler, mapping))
       add_term(std::move(term));
-    if (fast_p1 && dof_handler.get_fe().degree == 1 &&
+    if (!replaced && fast_p1 && dof_handler.get_fe().degree == 1 &&
         dof_handler.get_fe().n_components() == dim)
       {
         auto kernel = std::make_unique<P1Assembler<dim>>(dof_handler, material);
@@ -42,6 +43,8 @@ namespace hyperelastic
   bool
   ElasticityOperator<dim>::is_conservative() const
   {
+    if (!generic->is_conservative())
+      return false;
     for (const auto &term : terms)
       if (!term->is_conservative())
         return false;

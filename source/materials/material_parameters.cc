@@ -28,6 +28,17 @@ namespace hyperelastic
         "'Choosing a model'.";
       for (const MaterialModel &m : material_models())
         text += "\n'" + m.name + "': " + m.documentation;
+      text += "\n'" + std::string(MaterialParameters::stiffness_warping_name) +
+              "': Mueller et al. 2002: the linear elastic stiffness K "
+              "(shared elastic constants) warped by one rotation per vertex, "
+              "R_i from the polar decomposition of sum over edges (x_j - "
+              "x_i)(X_j - X_i)^T; forces f_i = R_i sum_j K_ij (R_i^T x_j - "
+              "X_j), tangent R_i K_ij R_i^T (not symmetric: GMRES). Not "
+              "derived from an energy: Newton's line search uses the residual "
+              "norm, and the energy and cell stresses reported are the "
+              "corotational model's. P1 displacement only; made for "
+              "animation with 'Time integration/Linearize once per step'. "
+              "Not a registered model: the per-model tests do not apply.";
       return text;
     }
   } // namespace
@@ -38,7 +49,8 @@ namespace hyperelastic
     prm.enter_subsection("Material");
     prm.declare_entry("Model",
                       "neo-Hookean",
-                      Selection(material_model_names()),
+                      Selection(material_model_names() + "|" +
+                                stiffness_warping_name),
                       model_documentation());
     prm.declare_entry("Elastic constants",
                       "Young's modulus and Poisson's ratio",
@@ -92,8 +104,9 @@ namespace hyperelastic
   MaterialParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    model                           = prm.get("Model");
-    const MaterialModel &registered = material_model(model);
+    model             = prm.get("Model");
+    stiffness_warping = model == stiffness_warping_name;
+    const MaterialModel &registered = material_model(registered_model());
     elastic_constants               = LameParameters();
     if (registered.uses_elastic_constants)
       parse_elastic_constants(prm, elastic_constants);
@@ -104,8 +117,9 @@ namespace hyperelastic
       {
         if (!registered.uses_elastic_constants)
           {
-            incompressible_entry = "Material/" + model + "/Bulk modulus";
-            prm.enter_subsection(model);
+            incompressible_entry =
+              "Material/" + registered.name + "/Bulk modulus";
+            prm.enter_subsection(registered.name);
             incompressible_value = prm.get("Bulk modulus");
             prm.leave_subsection();
           }

@@ -261,6 +261,7 @@ namespace hyperelastic
     timer.restart();
     stats.description_coarse_cells = description.coarse_cells.size();
     tria.create_triangulation(description);
+    mark_partition_edges(description, tria);
     stats.distribute_time  = timer.wall_time();
     stats.global_cells     = outcome.global_cells;
     stats.reoriented_cells = outcome.reoriented_cells;

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdint>
 #include <limits>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -124,6 +125,25 @@ namespace hyperelastic
     return description;
   }
 
+  template <int dim>
+  void
+  mark_partition_edges(
+    const TriangulationDescription::Description<dim, dim> &description,
+    Triangulation<dim>                                    &tria)
+  {
+    // (coarse cell id, face number) of every face on the mesh's boundary.
+    std::set<std::pair<types::coarse_cell_id, unsigned int>> on_boundary;
+    for (const auto &level : description.cell_infos)
+      for (const auto &info : level)
+        for (const auto &[face, id] : info.boundary_ids)
+          on_boundary.emplace(CellId(info.id).get_coarse_cell_id(), face);
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            on_boundary.count({cell->id().get_coarse_cell_id(), f}) == 0)
+          cell->face(f)->set_boundary_id(partition_edge_boundary_id);
+  }
+
   void
   send(const std::vector<char> &buffer,
        const unsigned int       destination,
@@ -172,6 +192,12 @@ namespace hyperelastic
   partition_cells(const CheckedMesh<2> &, const unsigned int);
   template std::vector<unsigned int>
   partition_cells(const CheckedMesh<3> &, const unsigned int);
+  template void
+  mark_partition_edges(const TriangulationDescription::Description<2, 2> &,
+                       Triangulation<2> &);
+  template void
+  mark_partition_edges(const TriangulationDescription::Description<3, 3> &,
+                       Triangulation<3> &);
   template TriangulationDescription::Description<2, 2>
   describe_part(const CheckedMesh<2> &,
                 const std::vector<unsigned int> &,

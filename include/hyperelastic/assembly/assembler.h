@@ -40,5 +40,13 @@ namespace hyperelastic
     /// level, and the smallest J at the quadrature points. Collective.
     virtual EnergyEvaluation
     stored_energy(const VectorType &u, bool with_energy) const = 0;
+
+    /// Whether the internal forces are the gradient of the stored energy
+    /// (then the tangent is symmetric). Not so for stiffness warping.
+    virtual bool
+    is_conservative() const
+    {
+      return true;
+    }
   };
 } // namespace hyperelastic

@@ -28,7 +28,8 @@ namespace hyperelastic
     /// P1 kernel; otherwise, and for P2, from the generic FEValues loops.
     /// The load terms are made from @p boundary_conditions
     /// (create_load_terms()), which must outlive the operator.
-    /// A non-null @p material_part (the mixed formulation's) replaces both.
+    /// A non-null @p material_part (the mixed formulation's, stiffness
+    /// warping's) replaces both.
     ElasticityOperator(
       const dealii::DoFHandler<dim>  &dof_handler,
       const dealii::Mapping<dim>     &mapping,
@@ -45,9 +46,9 @@ namespace hyperelastic
       return p1 != nullptr;
     }
 
-    /// Whether every load term has a potential: then the total potential
-    /// energy exists, Newton's line search can use it, and the tangent is
-    /// symmetric.
+    /// Whether the material part and every load term have a potential: then
+    /// the total potential energy exists, Newton's line search can use it,
+    /// and the tangent is symmetric.
     bool
     is_conservative() const;
 
@@ -115,6 +116,8 @@ namespace hyperelastic
     load_forces(const VectorType &u, double t, VectorType &external) const;
 
     const dealii::DoFHandler<dim>              &dof_handler;
+    /// Whether a material part was given (then there is no P1 kernel).
+    const bool                                  replaced;
     std::unique_ptr<Assembler<dim>>             generic;
     std::unique_ptr<Assembler<dim>>             p1;
     std::vector<std::unique_ptr<LoadTerm<dim>>> terms;

@@ -19,8 +19,22 @@ namespace hyperelastic
 
   struct MaterialParameters
   {
-    /// Material/Model: a registered model name.
+    /// Material/Model: a registered model name, or stiffness warping.
     std::string model;
+    /// 'Material/Model = stiffness warping' (assembly/warped_assembler.h):
+    /// not a function of F, so not in the registry; the Material object is
+    /// then the corotational model with the same constants (rest moduli,
+    /// reported energy and cell stresses).
+    bool stiffness_warping = false;
+    static constexpr const char *stiffness_warping_name = "stiffness warping";
+
+    /// The registered model behind the scene's (the model itself, or
+    /// corotational for stiffness warping).
+    std::string
+    registered_model() const
+    {
+      return stiffness_warping ? "corotational" : model;
+    }
     /// The shared elastic constants (E and nu, Lame, or shear and bulk
     /// modulus) as (mu, lambda). Read and checked only when the model takes
     /// them (MaterialModel::uses_elastic_constants); otherwise zero.

@@ -27,6 +27,24 @@ namespace hyperelastic
   std::vector<unsigned int>
   partition_cells(const CheckedMesh<dim> &mesh, const unsigned int n_parts);
 
+  /// The boundary id of the faces where a rank's ghost layer ends (faces
+  /// between cells of the mesh, not on its boundary). Without it deal.II
+  /// gives them boundary id 0, and a Dirichlet condition on id 0 would
+  /// constrain the ghost dofs on them (harmless to cell-wise assembly, wrong
+  /// for the vertex rows of stiffness warping). Scenes cannot name it
+  /// (boundary ids in scenes are int).
+  constexpr dealii::types::boundary_id partition_edge_boundary_id =
+    dealii::numbers::internal_face_boundary_id - 1;
+
+  /// Gives the faces of @p tria (just made from @p description) that are on
+  /// its boundary but not on the mesh's (the description lists every face
+  /// on the mesh's boundary) partition_edge_boundary_id.
+  template <int dim>
+  void
+  mark_partition_edges(
+    const dealii::TriangulationDescription::Description<dim, dim> &description,
+    dealii::Triangulation<dim>                                    &tria);
+
   /// The description of the part of rank @p rank: its cells and the
   /// ghost layer (every cell with a vertex of one of its cells), as
   /// TriangulationDescription::Utilities::

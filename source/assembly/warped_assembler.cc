@@ -1,0 +1,287 @@
+// Stiffness warping: the rest stiffness read into per-vertex rows once, then
+// warped by the vertex rotations at every state.
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <hyperelastic/assembly/warped_assembler.h>
+#include <hyperelastic/materials/polar_decomposition.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace hyperelastic
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// The linear elastic stiffness of @p dof_handler, unconstrained.
+    template <int dim>
+    void
+    assemble_rest_stiffness(const DoFHandler<dim> &dof_handler,
+                            const Mapping<dim>    &mapping,
+                            const Material<dim>   &linear,
+                            MatrixType            &stiffness)
+    {
+      const MPI_Comm comm     = dof_handler.get_communicator();
+      const IndexSet owned    = dof_handler.locally_owned_dofs();
+      IndexSet       relevant = DoFTools::extract_locally_relevant_dofs(
+        dof_handler);
+      DynamicSparsityPattern dsp(relevant);
+      DoFTools::make_sparsity_pattern(dof_handler, dsp);
+      SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+      stiffness.reinit(owned, owned, dsp, comm);
+
+      VectorType rest(owned, relevant, comm), rhs(owned, comm);
+      AffineConstraints<double> none;
+      none.close();
+      GenericAssembler<dim>(dof_handler, mapping, linear)
+        .system(rest, none, false, stiffness, rhs);
+    }
+  } // namespace
+
+  template <int dim>
+  WarpedAssembler<dim>::WarpedAssembler(const DoFHandler<dim> &dof_handler,
+                                        const Mapping<dim>    &mapping,
+                                        const Material<dim>   &material)
+      : dof_handler(dof_handler)
+      , linear(create_material<dim>("linear elastic",
+                                    material.small_strain_moduli()))
+      , corotational(dof_handler, mapping, material)
+  {
+    const FiniteElement<dim> &fe = dof_handler.get_fe();
+    if (fe.degree != 1 || fe.n_components() != dim)
+      throw std::logic_error(
+        "stiffness warping needs P1 displacement elements");
+
+    // The vertices of the owned and ghost cells, and which vertex and
+    // component every dof there belongs to.
+    std::unordered_map<types::global_dof_index, std::pair<unsigned int, unsigned int>>
+                                         dof_to_vertex;
+    std::vector<types::global_dof_index> dofs(fe.dofs_per_cell);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          cell->get_dof_indices(dofs);
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              // P1 system dofs: (component, vertex) for each local dof.
+              std::array<types::global_dof_index, dim> vertex_dofs;
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                if (fe.system_to_component_index(i).second == v)
+                  vertex_dofs[fe.system_to_component_index(i).first] = dofs[i];
+              if (dof_to_vertex.count(vertex_dofs[0]) != 0)
+                continue;
+              const unsigned int index = vertices.size();
+              vertices.push_back({cell->vertex(v), vertex_dofs});
+              for (unsigned int c = 0; c < dim; ++c)
+                dof_to_vertex[vertex_dofs[c]] = {index, c};
+            }
+        }
+
+    MatrixType stiffness;
+    assemble_rest_stiffness(dof_handler, mapping, *linear, stiffness);
+
+    // The owned vertices in the order of their dofs, and their rows.
+    const IndexSet owned = dof_handler.locally_owned_dofs();
+    for (unsigned int v = 0; v < vertices.size(); ++v)
+      if (owned.is_element(vertices[v].dofs[0]))
+        rows.owned_vertices.push_back(v);
+    std::sort(rows.owned_vertices.begin(),
+              rows.owned_vertices.end(),
+              [&](const unsigned int a, const unsigned int b) {
+                return vertices[a].dofs[0] < vertices[b].dofs[0];
+              });
+    rows.start.push_back(0);
+    for (const unsigned int i : rows.owned_vertices)
+      {
+        std::map<unsigned int, Tensor<2, dim>> blocks;
+        for (unsigned int a = 0; a < dim; ++a)
+          for (auto entry = stiffness.begin(vertices[i].dofs[a]);
+               entry != stiffness.end(vertices[i].dofs[a]);
+               ++entry)
+            {
+              const auto found = dof_to_vertex.find(entry->column());
+              if (found == dof_to_vertex.end())
+                throw std::logic_error("stiffness warping: a coupling of an "
+                                       "owned vertex lies outside the ghost "
+                                       "layer");
+              blocks[found->second.first][a][found->second.second] =
+                entry->value();
+              if (found->second.first == i && found->second.second == a)
+                stiffness_scale =
+                  std::max(stiffness_scale, std::abs(entry->value()));
+            }
+        for (const auto &[j, block] : blocks)
+          {
+            rows.neighbour.push_back(j);
+            rows.block.push_back(block);
+          }
+        rows.start.push_back(rows.neighbour.size());
+      }
+  }
+
+  template <int dim>
+  WarpedAssembler<dim>::~WarpedAssembler() = default;
+
+  template <int dim>
+  Tensor<2, dim>
+  WarpedAssembler<dim>::rotation(const unsigned int           r,
+                                 const VectorType            &u,
+                                 std::vector<Tensor<1, dim>> &dx) const
+  {
+    const Vertex  &vi = vertices[rows.owned_vertices[r]];
+    Tensor<1, dim> ui;
+    for (unsigned int c = 0; c < dim; ++c)
+      ui[c] = u(vi.dofs[c]);
+    Tensor<2, dim> A;
+    dx.resize(rows.start[r + 1] - rows.start[r]);
+    for (unsigned int k = rows.start[r]; k < rows.start[r + 1]; ++k)
+      {
+        const Vertex  &vj = vertices[rows.neighbour[k]];
+        Tensor<1, dim> d  = vj.X - vi.X;
+        const Tensor<1, dim> dX = d;
+        for (unsigned int c = 0; c < dim; ++c)
+          d[c] += u(vj.dofs[c]) - ui[c];
+        dx[k - rows.start[r]] = d;
+        A += outer_product(d, dX);
+      }
+    if (A.norm() == 0.)
+      return unit_symmetric_tensor<dim>();
+    return polar_decomposition(A).R;
+  }
+
+  template <int dim>
+  double
+  WarpedAssembler<dim>::internal_forces(const VectorType &u,
+                                        VectorType       &internal) const
+  {
+    std::vector<Tensor<1, dim>> dx;
+    double                      force_squared = 0.;
+    for (unsigned int r = 0; r < rows.owned_vertices.size(); ++r)
+      {
+        const Tensor<2, dim> R  = rotation(r, u, dx);
+        const Vertex        &vi = vertices[rows.owned_vertices[r]];
+        Tensor<1, dim>       f;
+        double               magnitude = 0.;
+        for (unsigned int k = rows.start[r]; k < rows.start[r + 1]; ++k)
+          {
+            const Tensor<1, dim> &d  = dx[k - rows.start[r]];
+            const Tensor<1, dim>  dX = vertices[rows.neighbour[k]].X - vi.X;
+            f += rows.block[k] * (transpose(R) * d - dX);
+            magnitude += rows.block[k].norm() * d.norm();
+          }
+        f = R * f;
+        for (unsigned int c = 0; c < dim; ++c)
+          internal[vi.dofs[c]] = f[c];
+        force_squared += magnitude * magnitude;
+      }
+    internal.compress(VectorOperation::insert);
+    return std::numeric_limits<double>::epsilon() *
+           std::sqrt(
+             Utilities::MPI::sum(force_squared, dof_handler.get_communicator()));
+  }
+
+  template <int dim>
+  bool
+  WarpedAssembler<dim>::system(const VectorType                &u,
+                               const AffineConstraints<double> &constraints,
+                               const bool /*project_tangent*/,
+                               MatrixType &matrix,
+                               VectorType &rhs) const
+  {
+    matrix = 0.;
+    rhs    = 0.;
+    std::vector<Tensor<1, dim>>          dx;
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    std::vector<Tensor<2, dim>>          warped;
+    for (unsigned int r = 0; r < rows.owned_vertices.size(); ++r)
+      {
+        const Tensor<2, dim> R  = rotation(r, u, dx);
+        const Vertex        &vi = vertices[rows.owned_vertices[r]];
+        Tensor<1, dim>       f;
+        warped.clear();
+        for (unsigned int k = rows.start[r]; k < rows.start[r + 1]; ++k)
+          {
+            const Tensor<1, dim> dX = vertices[rows.neighbour[k]].X - vi.X;
+            f += rows.block[k] * (transpose(R) * dx[k - rows.start[r]] - dX);
+            warped.push_back(R * rows.block[k] * transpose(R));
+          }
+        f = R * f;
+        for (unsigned int a = 0; a < dim; ++a)
+          {
+            const types::global_dof_index row = vi.dofs[a];
+            if (constraints.is_constrained(row))
+              {
+                // d du_r = d g_r with d the row's rest diagonal.
+                double d = stiffness_scale;
+                for (unsigned int k = rows.start[r]; k < rows.start[r + 1]; ++k)
+                  if (rows.neighbour[k] == rows.owned_vertices[r] &&
+                      rows.block[k][a][a] > 0.)
+                    d = rows.block[k][a][a];
+                matrix.add(row, row, d);
+                rhs[row] = d * constraints.get_inhomogeneity(row);
+                continue;
+              }
+            columns.clear();
+            values.clear();
+            double moved = 0.;
+            for (unsigned int k = rows.start[r]; k < rows.start[r + 1]; ++k)
+              {
+                const Vertex &vj = vertices[rows.neighbour[k]];
+                for (unsigned int b = 0; b < dim; ++b)
+                  {
+                    const double value = warped[k - rows.start[r]][a][b];
+                    if (!constraints.is_constrained(vj.dofs[b]))
+                      {
+                        columns.push_back(vj.dofs[b]);
+                        values.push_back(value);
+                        continue;
+                      }
+                    const auto *entries =
+                      constraints.get_constraint_entries(vj.dofs[b]);
+                    if (entries != nullptr && !entries->empty())
+                      throw std::logic_error("stiffness warping: only "
+                                             "Dirichlet constraints are "
+                                             "supported");
+                    moved +=
+                      value * constraints.get_inhomogeneity(vj.dofs[b]);
+                  }
+              }
+            matrix.add(row, columns.size(), columns.data(), values.data());
+            rhs[row] = -f[a] - moved;
+          }
+      }
+    matrix.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::insert);
+    return true;
+  }
+
+  template <int dim>
+  EnergyEvaluation
+  WarpedAssembler<dim>::stored_energy(const VectorType &u,
+                                      const bool        with_energy) const
+  {
+    return corotational.stored_energy(u, with_energy);
+  }
+
+  template <int dim>
+  std::vector<Tensor<2, dim>>
+  WarpedAssembler<dim>::vertex_rotations(const VectorType &u) const
+  {
+    std::vector<Tensor<2, dim>> rotations;
+    std::vector<Tensor<1, dim>> dx;
+    for (unsigned int r = 0; r < rows.owned_vertices.size(); ++r)
+      rotations.push_back(rotation(r, u, dx));
+    return rotations;
+  }
+
+  template class WarpedAssembler<2>;
+  template class WarpedAssembler<3>;
+} // namespace hyperelastic
