@@ -577,6 +577,13 @@ namespace hyperelastic
                                                    ti.lumped_mass);
     inertia = term.get();
     elasticity->add_term(std::move(term));
+    if (ti.stiffness_damping > 0.)
+      {
+        auto damping = std::make_unique<StiffnessDampingTerm<dim>>(
+          dof_handler, mapping, material->small_strain_moduli());
+        stiffness_damping = damping.get();
+        elasticity->add_term(std::move(damping));
+      }
     integrator = std::make_unique<TimeIntegrator>(ti.scheme, ti.mass_damping);
     motion = std::make_unique<Motion<dim>>(dof_handler, mapping, *inertia);
     for (VectorType *v :
@@ -618,6 +625,14 @@ namespace hyperelastic
                             c,
                             trial);
     inertia->set_step(c, trial);
+    if (stiffness_damping)
+      {
+        double kappa = 0.;
+        integrator->velocity_map(
+          t - converged.load_factor, converged.u, velocity, kappa, trial);
+        stiffness_damping->set_step(
+          parameters.time_integration.stiffness_damping * kappa, trial);
+      }
   }
 
   template <int dim>
@@ -708,9 +723,12 @@ namespace hyperelastic
     s.energy            = elasticity->total_energy(u_ghosted, load_factor);
     if (inertia)
       {
-        // Potential energy without the step's inertia term; kinetic energy
+        // Potential energy without the step's inertia and damping terms;
+        // kinetic energy
         // and momenta of the converged motion.
         s.energy -= inertia->potential(u_ghosted, load_factor);
+        if (stiffness_damping)
+          s.energy -= stiffness_damping->potential(u_ghosted, load_factor);
         const MotionMeasures m = motion->measure(u_ghosted, velocity_ghosted);
         s.dynamic            = true;
         s.kinetic_energy     = m.kinetic_energy;

@@ -15,6 +15,7 @@
 #include <hyperelastic/assembly/elasticity_operator.h>
 #include <hyperelastic/dynamics/inertia.h>
 #include <hyperelastic/dynamics/motion.h>
+#include <hyperelastic/dynamics/stiffness_damping.h>
 #include <hyperelastic/dynamics/time_integrator.h>
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/materials/material.h>
@@ -260,6 +261,9 @@ namespace hyperelastic
     void
     begin_time_step(double t);
     InertiaTerm<dim>               *inertia = nullptr;
+    /// 'Time integration/Stiffness damping' > 0 only (owned by the
+    /// operator).
+    StiffnessDampingTerm<dim> *stiffness_damping = nullptr;
     std::unique_ptr<TimeIntegrator> integrator;
     std::unique_ptr<Motion<dim>>    motion;
     VectorType velocity, acceleration, new_velocity, new_acceleration;

@@ -1,9 +1,6 @@
 // Stiffness warping: the rest stiffness read into per-vertex rows once, then
 // warped by the vertex rotations at every state.
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
-
+#include <hyperelastic/assembly/rest_stiffness.h>
 #include <hyperelastic/assembly/warped_assembler.h>
 #include <hyperelastic/materials/polar_decomposition.h>
 
@@ -18,40 +15,11 @@ namespace hyperelastic
 {
   using namespace dealii;
 
-  namespace
-  {
-    /// The linear elastic stiffness of @p dof_handler, unconstrained.
-    template <int dim>
-    void
-    assemble_rest_stiffness(const DoFHandler<dim> &dof_handler,
-                            const Mapping<dim>    &mapping,
-                            const Material<dim>   &linear,
-                            MatrixType            &stiffness)
-    {
-      const MPI_Comm comm     = dof_handler.get_communicator();
-      const IndexSet owned    = dof_handler.locally_owned_dofs();
-      IndexSet       relevant = DoFTools::extract_locally_relevant_dofs(
-        dof_handler);
-      DynamicSparsityPattern dsp(relevant);
-      DoFTools::make_sparsity_pattern(dof_handler, dsp);
-      SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
-      stiffness.reinit(owned, owned, dsp, comm);
-
-      VectorType rest(owned, relevant, comm), rhs(owned, comm);
-      AffineConstraints<double> none;
-      none.close();
-      GenericAssembler<dim>(dof_handler, mapping, linear)
-        .system(rest, none, false, stiffness, rhs);
-    }
-  } // namespace
-
   template <int dim>
   WarpedAssembler<dim>::WarpedAssembler(const DoFHandler<dim> &dof_handler,
                                         const Mapping<dim>    &mapping,
                                         const Material<dim>   &material)
       : dof_handler(dof_handler)
-      , linear(create_material<dim>("linear elastic",
-                                    material.small_strain_moduli()))
       , corotational(dof_handler, mapping, material)
   {
     const FiniteElement<dim> &fe = dof_handler.get_fe();
@@ -85,7 +53,10 @@ namespace hyperelastic
         }
 
     MatrixType stiffness;
-    assemble_rest_stiffness(dof_handler, mapping, *linear, stiffness);
+    assemble_rest_stiffness(dof_handler,
+                            mapping,
+                            material.small_strain_moduli(),
+                            stiffness);
 
     // The owned vertices in the order of their dofs, and their rows.
     const IndexSet owned = dof_handler.locally_owned_dofs();

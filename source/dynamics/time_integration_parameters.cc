@@ -73,8 +73,13 @@ namespace hyperelastic
                       "0",
                       Double(0),
                       "Rayleigh damping C = a M + b K0: the coefficient b "
-                      "(time), with K0 the stiffness at rest. Not implemented "
-                      "yet: a value other than 0 is rejected.");
+                      "(time), with K0 the linear elastic stiffness at rest "
+                      "(the model's small-strain moduli). At small amplitude "
+                      "a mode of angular frequency omega is damped at the "
+                      "ratio b omega / 2 (higher modes more). K0 belongs to "
+                      "the rest configuration: it also resists the velocity "
+                      "of a large rigid rotation, so use mass damping for "
+                      "spinning bodies.");
     prm.declare_entry("Output every",
                       "1",
                       Integer(1),
@@ -126,10 +131,5 @@ namespace hyperelastic
              std::to_string(end_time),
              "must be at least one time step (" + std::to_string(time_step) +
                ")");
-    if (stiffness_damping != 0.)
-      reject("Time integration/Stiffness damping",
-             std::to_string(stiffness_damping),
-             "stiffness-proportional damping is not implemented yet; use "
-             "Mass damping");
   }
 } // namespace hyperelastic

@@ -12,6 +12,22 @@ namespace hyperelastic
   }
 
   void
+  TimeIntegrator::velocity_map(const double      h,
+                               const VectorType &u_n,
+                               const VectorType &v_n,
+                               double           &kappa,
+                               VectorType       &d) const
+  {
+    // Backward Euler v = (u - u_n) / h; midpoint (u the midpoint state)
+    // v = 2 (u - u_n) / h; Newmark v = v_n + h/2 a_n + 2/h (u - u_n - h v_n
+    // - h^2/4 a_n) = 2/h (u - (u_n + h/2 v_n)).
+    d = u_n;
+    if (scheme == TimeScheme::newmark)
+      d.add(0.5 * h, v_n);
+    kappa = scheme == TimeScheme::backward_euler ? 1. / h : 2. / h;
+  }
+
+  void
   TimeIntegrator::step_target(const double      h,
                               const VectorType &u_n,
                               const VectorType &v_n,
@@ -19,45 +35,29 @@ namespace hyperelastic
                               double           &c,
                               VectorType       &w) const
   {
-    VectorType damped(u_n);
-    double     c_inertia = 0., c_damping = 0.;
+    // Inertia c_i/2 |u - w_i|_M^2: backward Euler c_i = 1/h^2, w_i = u_n +
+    // h v_n; midpoint (for the midpoint state) 4/h^2, u_n + h/2 v_n; Newmark
+    // 4/h^2, u_pred = u_n + h v_n + h^2/4 a_n.
+    w = u_n;
     if (scheme == TimeScheme::backward_euler)
-      {
-        // Inertia 1/h^2 |u - (u_n + h v_n)|^2; damping force alpha M (u -
-        // u_n) / h, i.e. alpha/h |u - u_n|^2 / 2.
-        w = u_n;
-        w.add(h, v_n);
-        c_inertia = 1. / (h * h);
-        c_damping = mass_damping / h;
-      }
+      w.add(h, v_n);
     else if (scheme == TimeScheme::midpoint)
-      {
-        // Inertia 4/h^2 |u - (u_n + h/2 v_n)|^2 / 2 for the midpoint state
-        // u; damping alpha M 2 (u - u_n) / h.
-        w = u_n;
-        w.add(0.5 * h, v_n);
-        c_inertia = 4. / (h * h);
-        c_damping = 2. * mass_damping / h;
-      }
+      w.add(0.5 * h, v_n);
     else
-      {
-        // Inertia 4/h^2 |u - u_pred|^2 / 2; damping alpha M v with v = v_n +
-        // h/2 a_n + 2/h (u - u_pred): alpha 2/h |u - (u_pred - h/2 (v_n +
-        // h/2 a_n))|^2 / 2.
-        w = u_n;
-        w.add(h, v_n, 0.25 * h * h, a_n);
-        damped = w;
-        damped.add(-0.5 * h, v_n, -0.25 * h * h, a_n);
-        c_inertia = 4. / (h * h);
-        c_damping = 2. * mass_damping / h;
-      }
-    c = c_inertia + c_damping;
-    if (c_damping > 0.)
-      {
-        // c_i/2 |u - w|^2 + c_d/2 |u - d|^2 = c/2 |u - (c_i w + c_d d)/c|^2
-        // + constant.
-        w.sadd(c_inertia / c, c_damping / c, damped);
-      }
+      w.add(h, v_n, 0.25 * h * h, a_n);
+    const double c_inertia =
+      scheme == TimeScheme::backward_euler ? 1. / (h * h) : 4. / (h * h);
+    c = c_inertia;
+    if (!(mass_damping > 0.))
+      return;
+    // Mass damping alpha M v(u) = alpha kappa M (u - d): c_i/2 |u - w_i|^2 +
+    // c_d/2 |u - d|^2 = c/2 |u - (c_i w_i + c_d d)/c|^2 + constant.
+    double     kappa = 0.;
+    VectorType d(u_n);
+    velocity_map(h, u_n, v_n, kappa, d);
+    const double c_damping = mass_damping * kappa;
+    c                      = c_inertia + c_damping;
+    w.sadd(c_inertia / c, c_damping / c, d);
   }
 
   void

@@ -96,7 +96,6 @@ namespace hyperelastic
              std::vector<Tensor<1, dim>> &dx) const;
 
     const dealii::DoFHandler<dim>  &dof_handler;
-    std::unique_ptr<Material<dim>>  linear;
     GenericAssembler<dim>           corotational;
     std::vector<Vertex>             vertices;
     Rows                            rows;

@@ -10,7 +10,9 @@
 //   implicit midpoint: the unknown is u at t_n + h/2 (loads there too),
 //     4/h^2 M (u - u_n - h/2 v_n) + f_int(u) = f_ext(t_n + h/2), then
 //     u_n+1 = 2 u - u_n, v = 2 (u_n+1 - u_n) / h - v_n, a = (v - v_n) / h.
-// Mass damping C = alpha M adds alpha M v(u), linear in u: c and w absorb it.
+// The end velocity is affine in the solved u, v = kappa (u - d)
+// (velocity_map): mass damping alpha M v(u) is absorbed by c and w,
+// stiffness damping b K0 v(u) is a term of its own (stiffness_damping.h).
 #pragma once
 
 #include <hyperelastic/assembly/assembly_tools.h>
@@ -31,6 +33,16 @@ namespace hyperelastic
                 const VectorType &a_n,
                 double           &c,
                 VectorType       &w) const;
+
+    /// The end-of-step velocity (implicit midpoint: the step's mean
+    /// velocity) as an affine function of the solved u: v = @p kappa (u -
+    /// @p d).
+    void
+    velocity_map(double            h,
+                 const VectorType &u_n,
+                 const VectorType &v_n,
+                 double           &kappa,
+                 VectorType       &d) const;
 
     /// The time at which the step from @p t_n to @p t_end solves its
     /// equations (implicit midpoint: half way; otherwise @p t_end).

@@ -1,0 +1,22 @@
+// The linear elastic stiffness K0 at rest of a displacement field, with
+// every coupling of the dofs (as Problem's tangent) and no constraints: the
+// matrix stiffness warping rotates and stiffness-proportional damping uses.
+#pragma once
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+
+#include <hyperelastic/assembly/assembly_tools.h>
+#include <hyperelastic/materials/material.h>
+
+namespace hyperelastic
+{
+  /// K0 of linear elasticity with the small-strain moduli @p moduli into
+  /// @p stiffness (reinitialised on the owned rows; collective).
+  template <int dim>
+  void
+  assemble_rest_stiffness(const dealii::DoFHandler<dim> &dof_handler,
+                          const dealii::Mapping<dim>    &mapping,
+                          const LameParameters          &moduli,
+                          MatrixType                    &stiffness);
+} // namespace hyperelastic

@@ -1,0 +1,114 @@
+// Stiffness-proportional damping: K0 assembled once, applied as a matrix.
+#include <hyperelastic/assembly/rest_stiffness.h>
+#include <hyperelastic/dynamics/stiffness_damping.h>
+
+#include <stdexcept>
+
+namespace hyperelastic
+{
+  using namespace dealii;
+
+  template <int dim>
+  StiffnessDampingTerm<dim>::StiffnessDampingTerm(
+    const DoFHandler<dim> &dof_handler,
+    const Mapping<dim>    &mapping,
+    const LameParameters  &moduli)
+  {
+    assemble_rest_stiffness(dof_handler, mapping, moduli, stiffness);
+    const IndexSet owned = dof_handler.locally_owned_dofs();
+    for (VectorType *v : {&zero, &difference, &product})
+      v->reinit(owned, dof_handler.get_communicator());
+  }
+
+  template <int dim>
+  void
+  StiffnessDampingTerm<dim>::set_step(const double s, const VectorType &d)
+  {
+    scale = s;
+    zero  = d;
+  }
+
+  template <int dim>
+  void
+  StiffnessDampingTerm<dim>::apply(const VectorType &u,
+                                   VectorType       &diff,
+                                   VectorType       &Kd) const
+  {
+    for (const auto i : diff.locally_owned_elements())
+      diff(i) = u(i) - zero(i);
+    diff.compress(VectorOperation::insert);
+    stiffness.vmult(Kd, diff);
+  }
+
+  template <int dim>
+  void
+  StiffnessDampingTerm<dim>::add_forces(const VectorType &u,
+                                        const double,
+                                        VectorType &forces) const
+  {
+    apply(u, difference, product);
+    std::vector<types::global_dof_index> indices;
+    std::vector<double>                  values;
+    for (const auto i : product.locally_owned_elements())
+      {
+        indices.push_back(i);
+        values.push_back(-scale * product(i));
+      }
+    forces.add(indices, values);
+  }
+
+  template <int dim>
+  void
+  StiffnessDampingTerm<dim>::add_load_stiffness(
+    const VectorType &,
+    const double,
+    const AffineConstraints<double> &constraints,
+    MatrixType                      &matrix,
+    VectorType                      &rhs) const
+  {
+    // Row by row: free rows get s K0 on their free columns; the prescribed
+    // values of constrained columns move to the right-hand side.
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    for (const auto row : product.locally_owned_elements())
+      {
+        if (constraints.is_constrained(row))
+          continue;
+        columns.clear();
+        values.clear();
+        double moved = 0.;
+        for (auto entry = stiffness.begin(row); entry != stiffness.end(row);
+             ++entry)
+          {
+            const auto column = entry->column();
+            if (!constraints.is_constrained(column))
+              {
+                columns.push_back(column);
+                values.push_back(scale * entry->value());
+                continue;
+              }
+            const auto *entries = constraints.get_constraint_entries(column);
+            if (entries != nullptr && !entries->empty())
+              throw std::logic_error(
+                "stiffness damping: only Dirichlet constraints are supported");
+            moved += scale * entry->value() *
+                     constraints.get_inhomogeneity(column);
+          }
+        matrix.add(row, columns.size(), columns.data(), values.data());
+        if (moved != 0.)
+          rhs.add(std::vector<types::global_dof_index>{row},
+                  std::vector<double>{-moved});
+      }
+  }
+
+  template <int dim>
+  double
+  StiffnessDampingTerm<dim>::potential(const VectorType &u, const double) const
+  {
+    apply(u, difference, product);
+    return 0.5 * scale * (difference * product);
+  }
+
+  template class StiffnessDampingTerm<2>;
+  template class StiffnessDampingTerm<3>;
+} // namespace hyperelastic
