@@ -334,10 +334,10 @@ namespace hyperelastic
   Problem<dim>::assemble_linearization(const bool impose_constraint_increment,
                                        const bool positive_semidefinite)
   {
-    TimerOutput::Scope scope(timer, "assembly");
-    bool               moves_constraints = false;
+    bool moves_constraints = false;
     if (impose_constraint_increment)
       {
+        TimerOutput::Scope scope(timer, "Dirichlet values");
         // Prescribed minus current values: after a shortened step the next
         // linearization carries what is still missing.
         boundary_conditions->make_constraints(mapping,
@@ -352,6 +352,7 @@ namespace hyperelastic
           largest = std::max(largest, std::abs(line.inhomogeneity));
         moves_constraints = Utilities::MPI::max(largest, comm) > 0.;
       }
+    TimerOutput::Scope scope(timer, "assembly");
     // The update of this linearization must satisfy these constraints.
     active_constraints =
       moves_constraints ? &increment_constraints : &homogeneous_constraints;
