@@ -109,6 +109,8 @@ namespace hyperelastic
     std::unique_ptr<Epetra_MultiVector> unused_modes;
     data.set_parameters(ml_list, unused_modes, A);
     ml_list.set("PDE equations", static_cast<int>(n_components));
+    if (!parameters.smoothed_aggregation)
+      ml_list.set("aggregation: damping factor", 0.);
     // The mixed formulation: AMG on the displacement block only.
     if (saddle_point)
       block_null_space = saddle_point->displacement_rows(null_space, n_modes);

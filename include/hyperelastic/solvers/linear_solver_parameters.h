@@ -25,6 +25,9 @@ namespace hyperelastic
     std::string      direct_solver         = "Amesos_Klu";
     double           aggregation_threshold = 1e-4;
     unsigned int     smoother_sweeps       = 2;
+    /// ML's smoothed aggregation; false: plain aggregation (prolongator
+    /// damping 0).
+    bool smoothed_aggregation = true;
     /// The AMG hierarchy is rebuilt once CG needs more than this factor
     /// times the iterations (per decade of residual reduction) of the first
     /// solve with the current hierarchy; 0: rebuilt for every solve.
