@@ -43,7 +43,9 @@
 #include <hyperelastic/problem.h>
 
 #include "support/checker.h"
+#include "support/dimension_main.h"
 #include "support/nodal_error.h"
+#include "support/scene_run.h"
 #include "support/scene_text.h"
 
 #include <cmath>
@@ -103,18 +105,6 @@ namespace
   }
 
   template <int dim>
-  std::unique_ptr<Problem<dim>>
-  run(const std::string &text)
-  {
-    Parameters parameters;
-    parameters.read_from_string(text);
-    auto problem =
-      std::make_unique<Problem<dim>>(parameters, MPI_COMM_WORLD, false);
-    problem->run();
-    return problem;
-  }
-
-  template <int dim>
   void
   free_fall(Checker &checker)
   {
@@ -125,7 +115,7 @@ namespace
     for (const std::string &scheme : schemes)
       for (const std::string &mass : masses)
         {
-          auto problem = run<dim>(
+          auto problem = run_scene<dim>(
             block<dim>("neo-Hookean") +
             subsection("Loading", entry("Body force", gravity)) +
             time_section(scheme, mass, rho, h, n_steps * h));
@@ -176,7 +166,7 @@ namespace
     for (const std::string &scheme : schemes)
       for (const std::string &mass : masses)
         {
-          auto problem = run<dim>(
+          auto problem = run_scene<dim>(
             block<dim>(model.name) +
             time_section(scheme, mass, 1., 0.2, 2., spinning_velocity<dim>()));
           const auto &steps = problem->summaries();
@@ -199,7 +189,7 @@ namespace
   {
     for (const std::string &scheme : schemes)
       {
-        auto problem = run<dim>(
+        auto problem = run_scene<dim>(
           block<dim>("linear elastic") +
           time_section(scheme, "consistent", 1., 0.2, 4., spinning_velocity<dim>()));
         const auto        &steps = problem->summaries();
@@ -238,7 +228,7 @@ namespace
   void
   angular(Checker &checker)
   {
-    auto problem = run<dim>(
+    auto problem = run_scene<dim>(
       block<dim>("neo-Hookean") +
       time_section("implicit midpoint", "consistent", 1., 0.2, 4.,
                    spinning_velocity<dim>()));
@@ -272,11 +262,11 @@ namespace
                    entry("Body force", three ? "0; 0; -0.1" : "0; -0.1")) +
       dirichlet(1, three ? 4 : 2, three ? "x, y, z" : "x, y",
                 three ? "0; 0; 0" : "0; 0");
-    auto equilibrium = run<dim>(statics);
+    auto equilibrium = run_scene<dim>(statics);
     for (const std::string damping : {"Mass damping", "Stiffness damping"})
       {
         const std::string value   = damping == "Mass damping" ? "2" : "1";
-        auto              settled = run<dim>(
+        auto              settled = run_scene<dim>(
           statics + subsection("Time integration",
                                entry("Scheme", "backward Euler") +
                                  entry("Time step", "0.5") +
@@ -325,8 +315,8 @@ namespace
     const std::string time =
       entry("Scheme", "Newmark") + entry("Time step", "1") +
       entry("End time", "24");
-    auto full = run<dim>(scene + subsection("Time integration", time));
-    auto once = run<dim>(
+    auto full = run_scene<dim>(scene + subsection("Time integration", time));
+    auto once = run_scene<dim>(
       scene + subsection("Time integration",
                          time + entry("Linearize once per step", "true")));
     unsigned int most = 0, least_full = 1000;
@@ -386,7 +376,7 @@ namespace
                  entry("Directory", "dynamics_output") +
                    entry("Write VTU", "false") + entry("Verbose", "false") +
                    entry("Points", three ? "1, 0.05, 0.05" : "1, 0.05"));
-    return run<dim>(text);
+    return run_scene<dim>(text);
   }
 
   /// The first-mode period of the bar (see vibrating_bar) on @p n elements
@@ -521,17 +511,9 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  Checker checker(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
-  const std::string which = argc > 1 ? argv[1] : "free_fall";
-  const int         dim   = argc > 2 ? std::atoi(argv[2]) : 3;
-  const int         status = run_and_report(
-    [&]() {
-      if (dim == 2)
-        run_case<2>(which, checker);
-      else
-        run_case<3>(which, checker);
-    },
-    MPI_COMM_WORLD);
-  return checker.exit_code(status);
+  return run_case_for_dimension(argc,
+                                argv,
+                                "free_fall",
+                                run_case<2>,
+                                run_case<3>);
 }

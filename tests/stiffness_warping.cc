@@ -37,8 +37,10 @@
 
 #include "support/box_discretisation.h"
 #include "support/checker.h"
+#include "support/dimension_main.h"
 #include "support/nodal_error.h"
 #include "support/random_vector.h"
+#include "support/scene_run.h"
 #include "support/scene_text.h"
 
 #include <cmath>
@@ -50,11 +52,12 @@ using namespace dealii;
 
 namespace
 {
-  /// u_a = g(X_a) at every vertex (P1), with ghost entries.
-  template <int dim>
+  /// Sets every owned entry of a P1 vector field to @p value(cell, i,
+  /// dofs) for the cell's local dof i (component and vertex from
+  /// system_to_component_index); @p dofs are the cell's dof indices.
+  template <int dim, typename Value>
   VectorType
-  nodal_field(const BoxDiscretisation<dim>                           &box,
-              const std::function<Tensor<1, dim>(const Point<dim> &)> &g)
+  owned_nodal_values(const BoxDiscretisation<dim> &box, Value &&value)
   {
     VectorType                           owned(box.owned, box.comm);
     std::vector<types::global_dof_index> dofs(box.fe.dofs_per_cell);
@@ -64,12 +67,24 @@ namespace
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
             if (box.owned.is_element(dofs[i]))
-              {
-                const auto [c, v] = box.fe.system_to_component_index(i);
-                owned(dofs[i])    = g(cell->vertex(v))[c];
-              }
+              owned(dofs[i]) = value(cell, i, dofs);
         }
     owned.compress(VectorOperation::insert);
+    return owned;
+  }
+
+  /// u_a = g(X_a) at every vertex (P1), with ghost entries.
+  template <int dim>
+  VectorType
+  nodal_field(const BoxDiscretisation<dim>                           &box,
+              const std::function<Tensor<1, dim>(const Point<dim> &)> &g)
+  {
+    const VectorType owned = owned_nodal_values(
+      box, [&](const auto &cell, const unsigned int i, const auto &) {
+        const auto [c, v] = box.fe.system_to_component_index(i);
+        return g(cell->vertex(v))[c];
+      });
+    // A copy (not a move) imports the ghost entries.
     VectorType ghosted(box.owned, box.relevant, box.comm);
     ghosted = owned;
     return ghosted;
@@ -84,27 +99,16 @@ namespace
   {
     VectorType ghosted(box.owned, box.relevant, box.comm);
     ghosted = f;
-    VectorType                           rotated(box.owned, box.comm);
-    std::vector<types::global_dof_index> dofs(box.fe.dofs_per_cell);
-    for (const auto &cell : box.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (box.owned.is_element(dofs[i]))
-              {
-                const auto [c, v] = box.fe.system_to_component_index(i);
-                double value      = 0.;
-                for (unsigned int j = 0; j < dofs.size(); ++j)
-                  if (box.fe.system_to_component_index(j).second == v)
-                    value +=
-                      Q[c][box.fe.system_to_component_index(j).first] *
-                      ghosted(dofs[j]);
-                rotated(dofs[i]) = value;
-              }
-        }
-    rotated.compress(VectorOperation::insert);
-    return rotated;
+    return owned_nodal_values(
+      box, [&](const auto &, const unsigned int i, const auto &dofs) {
+        const auto [c, v] = box.fe.system_to_component_index(i);
+        double value      = 0.;
+        for (unsigned int j = 0; j < dofs.size(); ++j)
+          if (box.fe.system_to_component_index(j).second == v)
+            value += Q[c][box.fe.system_to_component_index(j).first] *
+                     ghosted(dofs[j]);
+        return value;
+      });
   }
 
   /// Rotation by @p angle about (1, 2, 2)/3 in 3D, in the plane in 2D.
@@ -280,18 +284,6 @@ namespace
       }
   }
 
-  template <int dim>
-  std::unique_ptr<Problem<dim>>
-  run(const std::string &text)
-  {
-    Parameters parameters;
-    parameters.read_from_string(text);
-    auto problem =
-      std::make_unique<Problem<dim>>(parameters, MPI_COMM_WORLD, false);
-    problem->run();
-    return problem;
-  }
-
   std::string
   quiet_output(const std::string &points = "")
   {
@@ -326,9 +318,9 @@ namespace
                           entry("End time", "60") +
                           entry("Linearize once per step", linearize));
     };
-    auto corotational = run<dim>(scene("corotational", "false"));
-    auto warped       = run<dim>(scene("stiffness warping", "false"));
-    auto once         = run<dim>(scene("stiffness warping", "true"));
+    auto corotational = run_scene<dim>(scene("corotational", "false"));
+    auto warped       = run_scene<dim>(scene("stiffness warping", "false"));
+    auto once         = run_scene<dim>(scene("stiffness warping", "true"));
 
     const auto tip = [](const StepSummary<dim> &s) {
       return s.point_displacements[0][dim - 1];
@@ -379,7 +371,7 @@ namespace
     };
     const std::string tag = std::to_string(dim) + "D stiffness warping, free body: ";
     const std::string v0  = three ? "0.1; -0.2; 0.3" : "0.1; -0.2";
-    auto translating = run<dim>(scene(v0));
+    auto translating = run_scene<dim>(scene(v0));
     Tensor<1, dim> v;
     v[0] = 0.1;
     v[1] = -0.2;
@@ -400,7 +392,7 @@ namespace
                       (2. * v.norm()),
                     1e-12);
 
-    auto spinning = run<dim>(scene(
+    auto spinning = run_scene<dim>(scene(
       three ? "0.1 - 0.3*(y - 0.5) + 0.1*(z - 0.5)*y; 0.3*(x - 0.5) - 0.05; "
               "0.02 - 0.1*(x - 0.5)*x" :
               "0.1 - 0.3*(y - 0.5) + 0.05*y*y; 0.3*(x - 0.5) - 0.05"));
@@ -434,17 +426,9 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  Checker checker(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
-  const std::string which  = argc > 1 ? argv[1] : "rigid";
-  const int         dim    = argc > 2 ? std::atoi(argv[2]) : 3;
-  const int         status = run_and_report(
-    [&]() {
-      if (dim == 2)
-        run_case<2>(which, checker);
-      else
-        run_case<3>(which, checker);
-    },
-    MPI_COMM_WORLD);
-  return checker.exit_code(status);
+  return run_case_for_dimension(argc,
+                                argv,
+                                "rigid",
+                                run_case<2>,
+                                run_case<3>);
 }

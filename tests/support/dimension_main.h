@@ -61,4 +61,32 @@ namespace hyperelastic::testing
       MPI_COMM_WORLD);
     return checker.exit_code(status);
   }
+
+  /// For test programs called as 'PROGRAM CASE DIM': runs
+  /// @p run_2d(case, checker) or @p run_3d(case, checker) by DIM (default
+  /// 3); CASE defaults to @p default_case.
+  template <typename Run2D, typename Run3D>
+  int
+  run_case_for_dimension(int                argc,
+                         char             **argv,
+                         const std::string &default_case,
+                         Run2D            &&run_2d,
+                         Run3D            &&run_3d)
+  {
+    dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    Checker checker(dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+    const std::string which  = argc > 1 ? argv[1] : default_case;
+    const int         dim    = argc > 2 ? std::atoi(argv[2]) : 3;
+    const int         status = run_and_report(
+      [&]() {
+        if (dim != 2 && dim != 3)
+          throw InputError("the second argument must be the dimension, 2 or 3");
+        if (dim == 2)
+          run_2d(which, checker);
+        else
+          run_3d(which, checker);
+      },
+      MPI_COMM_WORLD);
+    return checker.exit_code(status);
+  }
 } // namespace hyperelastic::testing
