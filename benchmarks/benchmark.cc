@@ -19,6 +19,8 @@
 //   N            cells across the bar's width (4N x N x N boxes, 6 tets each;
 //                manufactured: N x N x N boxes)
 //   DEGREE       1 (default) or 2
+//   then any number of SECTION/ENTRY=VALUE, appended to the scene (e.g.
+//   "Linear solver/AMG smoothed aggregation=false")
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
@@ -181,12 +183,25 @@ main(int argc, char *argv[])
   return run_and_report(
     [&]() {
       if (argc < 3)
-        throw InputError("usage: hyperelastic_benchmark bar|twist|manufactured N [DEGREE]");
+        throw InputError("usage: hyperelastic_benchmark bar|twist|manufactured N [DEGREE [SECTION/ENTRY=VALUE ...]]");
       const std::string  scene  = argv[1];
       const unsigned int n      = std::stoul(argv[2]);
       const unsigned int degree = argc > 3 ? std::stoul(argv[3]) : 1;
-      Parameters         parameters;
-      parameters.read_from_string(scene_text(scene, n, degree));
+      std::string text = scene_text(scene, n, degree);
+      for (int k = 4; k < argc; ++k)
+        {
+          const std::string setting = argv[k];
+          const auto        slash = setting.find('/'), equal = setting.find('=');
+          if (slash == std::string::npos || equal == std::string::npos ||
+              equal < slash)
+            throw InputError("extra setting '" + setting +
+                             "' is not SECTION/ENTRY=VALUE");
+          text += "subsection " + setting.substr(0, slash) + "\n  set " +
+                  setting.substr(slash + 1, equal - slash - 1) + " = " +
+                  setting.substr(equal + 1) + "\nend\n";
+        }
+      Parameters parameters;
+      parameters.read_from_string(text);
       parameters.output.directory = "output_benchmark";
       parameters.output.verbose   = false;
 
