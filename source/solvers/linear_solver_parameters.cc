@@ -59,9 +59,10 @@ namespace hyperelastic
       "true: ML's smoothed aggregation (prolongators smoothed by one damped "
       "Jacobi step, damping 4/3). false: plain aggregation (ML's "
       "'aggregation: damping factor' 0): sparser coarse operators, a "
-      "several times cheaper setup, about twice the CG iterations. "
-      "Measured on the twisted bar (benchmarks/README.md, 'ML settings "
-      "tried'): 0.88x the run time at 1.8e5 unknowns, the same at 2.5e4.");
+      "several times cheaper setup, two to three times the CG "
+      "iterations, growing with the problem. Measured on the twisted bar "
+      "(benchmarks/README.md, 'ML settings tried'): 0.88x the run time at "
+      "1.8e5 unknowns, the same at 2.5e4, 1.30x at 1.1e6.");
     prm.declare_entry(
       "AMG rebuild growth",
       "1.5",
