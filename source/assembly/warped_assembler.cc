@@ -31,26 +31,20 @@ namespace hyperelastic
     // component every dof there belongs to.
     std::unordered_map<types::global_dof_index, std::pair<unsigned int, unsigned int>>
                                          dof_to_vertex;
-    std::vector<types::global_dof_index> dofs(fe.dofs_per_cell);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
-        {
-          cell->get_dof_indices(dofs);
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              // P1 system dofs: (component, vertex) for each local dof.
-              std::array<types::global_dof_index, dim> vertex_dofs;
-              for (unsigned int i = 0; i < dofs.size(); ++i)
-                if (fe.system_to_component_index(i).second == v)
-                  vertex_dofs[fe.system_to_component_index(i).first] = dofs[i];
-              if (dof_to_vertex.count(vertex_dofs[0]) != 0)
-                continue;
-              const unsigned int index = vertices.size();
-              vertices.push_back({cell->vertex(v), vertex_dofs});
-              for (unsigned int c = 0; c < dim; ++c)
-                dof_to_vertex[vertex_dofs[c]] = {index, c};
-            }
-        }
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            std::array<types::global_dof_index, dim> vertex_dofs;
+            for (unsigned int c = 0; c < dim; ++c)
+              vertex_dofs[c] = cell->vertex_dof_index(v, c);
+            if (dof_to_vertex.count(vertex_dofs[0]) != 0)
+              continue;
+            const unsigned int index = vertices.size();
+            vertices.push_back({cell->vertex(v), vertex_dofs});
+            for (unsigned int c = 0; c < dim; ++c)
+              dof_to_vertex[vertex_dofs[c]] = {index, c};
+          }
 
     MatrixType stiffness;
     assemble_rest_stiffness(dof_handler,
@@ -84,12 +78,11 @@ namespace hyperelastic
                                        "layer");
               blocks[found->second.first][a][found->second.second] =
                 entry->value();
-              if (found->second.first == i && found->second.second == a)
-                stiffness_scale =
-                  std::max(stiffness_scale, std::abs(entry->value()));
             }
         for (const auto &[j, block] : blocks)
           {
+            if (j == i)
+              rows.diagonal.push_back(rows.neighbour.size());
             rows.neighbour.push_back(j);
             rows.block.push_back(block);
           }
@@ -128,28 +121,38 @@ namespace hyperelastic
   }
 
   template <int dim>
+  Tensor<1, dim>
+  WarpedAssembler<dim>::force(const unsigned int                 r,
+                              const Tensor<2, dim>               &R,
+                              const std::vector<Tensor<1, dim>> &dx,
+                              double                             &magnitude) const
+  {
+    const Vertex  &vi = vertices[rows.owned_vertices[r]];
+    Tensor<1, dim> f;
+    magnitude = 0.;
+    for (unsigned int k = rows.start[r]; k < rows.start[r + 1]; ++k)
+      {
+        const Tensor<1, dim> &d  = dx[k - rows.start[r]];
+        const Tensor<1, dim>  dX = vertices[rows.neighbour[k]].X - vi.X;
+        f += rows.block[k] * (transpose(R) * d - dX);
+        magnitude += rows.block[k].norm() * d.norm();
+      }
+    return R * f;
+  }
+
+  template <int dim>
   double
   WarpedAssembler<dim>::internal_forces(const VectorType &u,
                                         VectorType       &internal) const
   {
     std::vector<Tensor<1, dim>> dx;
-    double                      force_squared = 0.;
+    double                      force_squared = 0., magnitude = 0.;
     for (unsigned int r = 0; r < rows.owned_vertices.size(); ++r)
       {
-        const Tensor<2, dim> R  = rotation(r, u, dx);
-        const Vertex        &vi = vertices[rows.owned_vertices[r]];
-        Tensor<1, dim>       f;
-        double               magnitude = 0.;
-        for (unsigned int k = rows.start[r]; k < rows.start[r + 1]; ++k)
-          {
-            const Tensor<1, dim> &d  = dx[k - rows.start[r]];
-            const Tensor<1, dim>  dX = vertices[rows.neighbour[k]].X - vi.X;
-            f += rows.block[k] * (transpose(R) * d - dX);
-            magnitude += rows.block[k].norm() * d.norm();
-          }
-        f = R * f;
+        const Tensor<2, dim> R = rotation(r, u, dx);
+        const Tensor<1, dim> f = force(r, R, dx, magnitude);
         for (unsigned int c = 0; c < dim; ++c)
-          internal[vi.dofs[c]] = f[c];
+          internal[vertices[rows.owned_vertices[r]].dofs[c]] = f[c];
         force_squared += magnitude * magnitude;
       }
     internal.compress(VectorOperation::insert);
@@ -172,59 +175,36 @@ namespace hyperelastic
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
     std::vector<Tensor<2, dim>>          warped;
+    double                               magnitude = 0.;
     for (unsigned int r = 0; r < rows.owned_vertices.size(); ++r)
       {
         const Tensor<2, dim> R  = rotation(r, u, dx);
+        const Tensor<1, dim> f  = force(r, R, dx, magnitude);
         const Vertex        &vi = vertices[rows.owned_vertices[r]];
-        Tensor<1, dim>       f;
         warped.clear();
         for (unsigned int k = rows.start[r]; k < rows.start[r + 1]; ++k)
-          {
-            const Tensor<1, dim> dX = vertices[rows.neighbour[k]].X - vi.X;
-            f += rows.block[k] * (transpose(R) * dx[k - rows.start[r]] - dX);
-            warped.push_back(R * rows.block[k] * transpose(R));
-          }
-        f = R * f;
+          warped.push_back(R * rows.block[k] * transpose(R));
         for (unsigned int a = 0; a < dim; ++a)
           {
             const types::global_dof_index row = vi.dofs[a];
             if (constraints.is_constrained(row))
               {
                 // d du_r = d g_r with d the row's rest diagonal.
-                double d = stiffness_scale;
-                for (unsigned int k = rows.start[r]; k < rows.start[r + 1]; ++k)
-                  if (rows.neighbour[k] == rows.owned_vertices[r] &&
-                      rows.block[k][a][a] > 0.)
-                    d = rows.block[k][a][a];
+                const double d = rows.block[rows.diagonal[r]][a][a];
                 matrix.add(row, row, d);
                 rhs[row] = d * constraints.get_inhomogeneity(row);
                 continue;
               }
+            // Row a of the blocks R K_ij R^T.
             columns.clear();
             values.clear();
-            double moved = 0.;
             for (unsigned int k = rows.start[r]; k < rows.start[r + 1]; ++k)
-              {
-                const Vertex &vj = vertices[rows.neighbour[k]];
-                for (unsigned int b = 0; b < dim; ++b)
-                  {
-                    const double value = warped[k - rows.start[r]][a][b];
-                    if (!constraints.is_constrained(vj.dofs[b]))
-                      {
-                        columns.push_back(vj.dofs[b]);
-                        values.push_back(value);
-                        continue;
-                      }
-                    const auto *entries =
-                      constraints.get_constraint_entries(vj.dofs[b]);
-                    if (entries != nullptr && !entries->empty())
-                      throw std::logic_error("stiffness warping: only "
-                                             "Dirichlet constraints are "
-                                             "supported");
-                    moved +=
-                      value * constraints.get_inhomogeneity(vj.dofs[b]);
-                  }
-              }
+              for (unsigned int b = 0; b < dim; ++b)
+                {
+                  columns.push_back(vertices[rows.neighbour[k]].dofs[b]);
+                  values.push_back(warped[k - rows.start[r]][a][b]);
+                }
+            const double moved = condense_row(constraints, columns, values);
             matrix.add(row, columns.size(), columns.data(), values.data());
             rhs[row] = -f[a] - moved;
           }

@@ -2,7 +2,6 @@
 #include <hyperelastic/assembly/rest_stiffness.h>
 #include <hyperelastic/dynamics/stiffness_damping.h>
 
-#include <stdexcept>
 
 namespace hyperelastic
 {
@@ -76,24 +75,13 @@ namespace hyperelastic
           continue;
         columns.clear();
         values.clear();
-        double moved = 0.;
         for (auto entry = stiffness.begin(row); entry != stiffness.end(row);
              ++entry)
           {
-            const auto column = entry->column();
-            if (!constraints.is_constrained(column))
-              {
-                columns.push_back(column);
-                values.push_back(scale * entry->value());
-                continue;
-              }
-            const auto *entries = constraints.get_constraint_entries(column);
-            if (entries != nullptr && !entries->empty())
-              throw std::logic_error(
-                "stiffness damping: only Dirichlet constraints are supported");
-            moved += scale * entry->value() *
-                     constraints.get_inhomogeneity(column);
+            columns.push_back(entry->column());
+            values.push_back(scale * entry->value());
           }
+        const double moved = condense_row(constraints, columns, values);
         matrix.add(row, columns.size(), columns.data(), values.data());
         if (moved != 0.)
           rhs.add(std::vector<types::global_dof_index>{row},

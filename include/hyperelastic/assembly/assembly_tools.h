@@ -149,6 +149,36 @@ namespace hyperelastic
     return s.str();
   }
 
+  /// Condenses one matrix row with Dirichlet @p constraints: removes from
+  /// @p columns and @p values the constrained columns and returns the sum of
+  /// their values times the prescribed values (what moves to the right-hand
+  /// side, with a minus sign). Throws for constraints with entries.
+  inline double
+  condense_row(const dealii::AffineConstraints<double>      &constraints,
+               std::vector<dealii::types::global_dof_index> &columns,
+               std::vector<double>                          &values)
+  {
+    double       moved = 0.;
+    unsigned int kept  = 0;
+    for (unsigned int j = 0; j < columns.size(); ++j)
+      {
+        if (!constraints.is_constrained(columns[j]))
+          {
+            columns[kept]  = columns[j];
+            values[kept++] = values[j];
+            continue;
+          }
+        const auto *entries = constraints.get_constraint_entries(columns[j]);
+        if (entries != nullptr && !entries->empty())
+          throw std::logic_error(
+            "condense_row: only Dirichlet constraints are supported");
+        moved += values[j] * constraints.get_inhomogeneity(columns[j]);
+      }
+    columns.resize(kept);
+    values.resize(kept);
+    return moved;
+  }
+
   /// Adds @p cell_matrix (rows and columns @p dofs) to the rows of @p matrix
   /// whose dofs are not constrained, moving the columns of Dirichlet-
   /// constrained dofs to @p rhs with their prescribed values, as
@@ -168,24 +198,9 @@ namespace hyperelastic
       {
         if (constraints.is_constrained(dofs[i]))
           continue;
-        columns.clear();
-        values.clear();
-        double moved = 0.;
-        for (unsigned int j = 0; j < dofs.size(); ++j)
-          if (!constraints.is_constrained(dofs[j]))
-            {
-              columns.push_back(dofs[j]);
-              values.push_back(cell_matrix(i, j));
-            }
-          else
-            {
-              const auto *entries = constraints.get_constraint_entries(dofs[j]);
-              if (entries != nullptr && !entries->empty())
-                throw std::logic_error(
-                  "add_condensed: only Dirichlet constraints are supported");
-              moved +=
-                cell_matrix(i, j) * constraints.get_inhomogeneity(dofs[j]);
-            }
+        columns = dofs;
+        values.assign(&cell_matrix(i, 0), &cell_matrix(i, 0) + dofs.size());
+        const double moved = condense_row(constraints, columns, values);
         matrix.add(dofs[i], columns.size(), columns.data(), values.data());
         if (moved != 0.)
           rhs.add(std::vector<dealii::types::global_dof_index>{dofs[i]},

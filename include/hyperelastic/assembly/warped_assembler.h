@@ -86,6 +86,7 @@ namespace hyperelastic
       std::vector<unsigned int>   start;          ///< size n_owned + 1
       std::vector<unsigned int>   neighbour;      ///< into vertices
       std::vector<Tensor<2, dim>> block;          ///< K_ij
+      std::vector<unsigned int>   diagonal;       ///< position of K_ii
     };
 
     /// R_i of owned vertex r (the rotation of A_i; the identity where A_i
@@ -95,11 +96,18 @@ namespace hyperelastic
              const VectorType            &u,
              std::vector<Tensor<1, dim>> &dx) const;
 
+    /// f_i of owned vertex r with rotation @p R and relative positions
+    /// @p dx (from rotation()); @p magnitude: sum |K_ij| |dx_j|, the size of
+    /// its terms (round-off estimate).
+    Tensor<1, dim>
+    force(unsigned int                       r,
+          const Tensor<2, dim>              &R,
+          const std::vector<Tensor<1, dim>> &dx,
+          double                            &magnitude) const;
+
     const dealii::DoFHandler<dim>  &dof_handler;
     GenericAssembler<dim>           corotational;
     std::vector<Vertex>             vertices;
     Rows                            rows;
-    /// Scale of the stiffness entries (round-off estimate of the forces).
-    double stiffness_scale = 0.;
   };
 } // namespace hyperelastic
