@@ -131,17 +131,23 @@ namespace hyperelastic
     const TriangulationDescription::Description<dim, dim> &description,
     Triangulation<dim>                                    &tria)
   {
-    // (coarse cell id, face number) of every face on the mesh's boundary.
-    std::set<std::pair<types::coarse_cell_id, unsigned int>> on_boundary;
+    // (cell, face number) of every face on the mesh's boundary, for the
+    // cells of every level the description lists (with a global refinement
+    // the active cells are children, named by their whole CellId).
+    std::set<std::pair<CellId, unsigned int>> on_boundary;
     for (const auto &level : description.cell_infos)
       for (const auto &info : level)
         for (const auto &[face, id] : info.boundary_ids)
-          on_boundary.emplace(CellId(info.id).get_coarse_cell_id(), face);
+          on_boundary.emplace(CellId(info.id), face);
+    // Artificial cells (children of a refined coarse cell that neither this
+    // rank owns nor sees as ghosts) are not listed and carry no dofs: they
+    // are left alone.
     for (const auto &cell : tria.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            on_boundary.count({cell->id().get_coarse_cell_id(), f}) == 0)
-          cell->face(f)->set_boundary_id(partition_edge_boundary_id);
+      if (!cell->is_artificial())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              on_boundary.count({cell->id(), f}) == 0)
+            cell->face(f)->set_boundary_id(partition_edge_boundary_id);
   }
 
   void

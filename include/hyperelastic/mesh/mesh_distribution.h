@@ -38,7 +38,10 @@ namespace hyperelastic
 
   /// Gives the faces of @p tria (just made from @p description) that are on
   /// its boundary but not on the mesh's (the description lists every face
-  /// on the mesh's boundary) partition_edge_boundary_id.
+  /// on the mesh's boundary, by cell id and face number on every level)
+  /// partition_edge_boundary_id. Only owned and ghost cells are marked
+  /// (after a global refinement the artificial children of a coarse cell
+  /// are not described).
   template <int dim>
   void
   mark_partition_edges(
