@@ -11,13 +11,19 @@
 //   SCENE twist  the bar clamped at x = 0, its end turned by 90 degrees about
 //                its axis, under gravity; error: computed by run.py from the
 //                stored energy against the finest run
+//   SCENE twist_file  the twist on the gmsh bar of
+//                benchmarks/mesh_input/bar_big.geo with L = 4 and h = 1/N,
+//                read from the file twist_bar_N.msh in the working directory
+//                (run.py generates it; another file: "Mesh/File=PATH"),
+//                so that reading the file is part of the run; error: run.py
+//                compares the energy with the twist series' extrapolation
 //   SCENE manufactured  the unit cube in the manufactured finite-strain
 //                motion of tests/manufactured_motion.h (90-degree rotation of
 //                a smoothly deformed cube, body force -Div P), neo-Hookean;
 //                error: L2 error of the displacement relative to its L2
 //                norm (error_h1: the same in the H1 seminorm)
 //   N            cells across the bar's width (4N x N x N boxes, 6 tets each;
-//                manufactured: N x N x N boxes)
+//                manufactured: N x N x N boxes; twist_file: 1/h)
 //   DEGREE       1 (default) or 2
 //   then any number of SECTION/ENTRY=VALUE, appended to the scene (e.g.
 //   "Linear solver/AMG smoothed aggregation=false")
@@ -85,7 +91,16 @@ namespace
              dirichlet(4, 1, "x", std::to_string(4. * (stretch - 1.)) + "*t");
     if (scene == "twist")
       return bar_3d(n) + twist_loading();
-    throw InputError("unknown benchmark scene '" + scene + "' (bar, twist)");
+    // The gmsh bar's physical surfaces: 1 at x = 0, 2 at x = 4.
+    if (scene == "twist_file")
+      return bar_3d(n) + twist_loading() +
+             subsection("Mesh",
+                        entry("Source", "file") +
+                          entry("File", "twist_bar_" + std::to_string(n) + ".msh")) +
+             subsection("Dirichlet 1", entry("Boundary id", "1")) +
+             subsection("Dirichlet 2", entry("Boundary id", "2"));
+    throw InputError("unknown benchmark scene '" + scene +
+                     "' (bar, twist, twist_file, manufactured)");
   }
 
   /// Largest nodal error against the exact homogeneous stretch, relative to
@@ -183,7 +198,7 @@ main(int argc, char *argv[])
   return run_and_report(
     [&]() {
       if (argc < 3)
-        throw InputError("usage: hyperelastic_benchmark bar|twist|manufactured N [DEGREE [SECTION/ENTRY=VALUE ...]]");
+        throw InputError("usage: hyperelastic_benchmark bar|twist|twist_file|manufactured N [DEGREE [SECTION/ENTRY=VALUE ...]]");
       const std::string  scene  = argv[1];
       const unsigned int n      = std::stoul(argv[2]);
       const unsigned int degree = argc > 3 ? std::stoul(argv[3]) : 1;

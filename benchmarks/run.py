@@ -1,20 +1,25 @@
 #!/usr/bin/python3
 """Benchmark of run time against error for hyperelastic (P1, 3D).
 
-Runs build/hyperelastic_benchmark for the homogeneous bar (exact answer known)
-and the twisted bar under gravity at increasing resolution, on 1 and 2 MPI
-ranks, writes benchmarks/results.csv and draws the figures from it.
+Runs build/hyperelastic_benchmark for the homogeneous bar (exact answer known),
+the twisted bar under gravity, and the same twist on gmsh meshes read from
+files (generated once into build/benchmark_meshes/, needs gmsh) at increasing
+resolution, on 1 and 2 MPI ranks, writes benchmarks/results.csv and draws the
+figures from it.
 
   python3 benchmarks/run.py            # run everything, then plot (~15 min)
   python3 benchmarks/run.py --plot     # redraw the figures from results.csv
   python3 benchmarks/run.py --quick    # small sizes only (a smoke run)
+  python3 benchmarks/run.py --scenes twist_file   # run only these scenes and
+                                       # replace their rows in results.csv
   python3 benchmarks/run.py --degrees  # P1 against P2 on the manufactured
                                        # solution: degrees.csv and
                                        # work_precision_degree.png (~10 min)
 
 The twisted bar has no closed-form answer: its error is the relative error of
 the total potential energy against a Richardson extrapolation from the three
-finest meshes (P1 energies converge like h^2).
+finest meshes (P1 energies converge like h^2); the gmsh meshes are not nested,
+so their error is taken against the same extrapolated energy.
 """
 import argparse
 import csv
@@ -39,10 +44,30 @@ QUICK_DEGREE_SIZES = {1: [4, 6], 2: [2, 3]}
 SIZES = [8, 11, 16, 22, 32, 44]
 QUICK_SIZES = [6, 8, 11]
 TWO_RANK_MIN_N = 22  # 2 ranks from about 1.4e5 unknowns on
+# The twist on gmsh meshes (mesh_input/bar_big.geo, L = 4, h = 1/n): about
+# 19 n^3 tetrahedra, from 1.9e4 to 1.2e6 cells.
+FILE_SIZES = [10, 14, 20, 28, 40]
+QUICK_FILE_SIZES = [6, 8]
+FILE_TWO_RANK_MIN_N = 20
+GEO = os.path.join(HERE, "mesh_input", "bar_big.geo")
+MESH_DIR = os.path.join(ROOT, "build", "benchmark_meshes")
+
+
+def twist_mesh(n):
+    """The gmsh file of the twist_file scene with h = 1/n (made once)."""
+    path = os.path.join(MESH_DIR, f"twist_bar_{n}.msh")
+    if not os.path.exists(path):
+        os.makedirs(MESH_DIR, exist_ok=True)
+        subprocess.run(["gmsh", "-3", "-format", "msh41", "-setnumber", "h", repr(1.0 / n),
+                        "-setnumber", "L", "4", GEO, "-o", path],
+                       check=True, capture_output=True)
+    return path
 
 
 def run_one(scene, n, ranks, degree=1):
     command = [MPIRUN, "-np", str(ranks), EXE, scene, str(n), str(degree)]
+    if scene == "twist_file":
+        command.append("Mesh/File=" + twist_mesh(n))
     out = subprocess.run(command, capture_output=True, text=True, cwd=HERE)
     if out.returncode != 0:
         sys.exit("benchmark failed: " + " ".join(command) + "\n" + out.stdout + out.stderr)
@@ -79,7 +104,7 @@ def richardson_twist_errors(rows):
     limit = e3 - c * n3 ** -p
     print(f"twist: energy order {p:.3f}, extrapolated energy {limit:.12g}")
     for r in rows:
-        if r["scene"] == "twist":
+        if r["scene"] in ("twist", "twist_file"):
             r["error"] = f"{abs(float(r['energy']) - limit) / abs(limit):.6g}"
 
 
@@ -104,6 +129,10 @@ def finish(fig, ax, xlabel, ylabel, title, file_name):
     fig.savefig(os.path.join(HERE, file_name), dpi=110)
 
 
+SCENES = ("bar", "twist", "twist_file")
+SCENE_MARKERS = (("bar", "o"), ("twist", "s"), ("twist_file", "^"))
+
+
 def plot(rows):
     plt = pyplot()
 
@@ -112,7 +141,7 @@ def plot(rows):
         return sorted(s, key=lambda r: int(r["dofs"]))
 
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    for scene, marker in (("bar", "o"), ("twist", "s")):
+    for scene, marker in SCENE_MARKERS:
         for ranks in (1, 2):
             s = [r for r in series(scene, ranks) if float(r["error"]) > 0]
             if s:
@@ -122,7 +151,7 @@ def plot(rows):
     finish(fig, ax, "relative error (bar: max nodal displacement; twist: energy)", "wall time [s]", "Work-precision, P1 neo-Hookean, 3D", "work_precision.png")
 
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    for scene, marker in (("bar", "o"), ("twist", "s")):
+    for scene, marker in SCENE_MARKERS:
         for ranks in (1, 2):
             s = series(scene, ranks)
             if s:
@@ -133,7 +162,7 @@ def plot(rows):
     finish(fig, ax, "unknowns", "wall time per unknown [µs]", "Time per unknown (whole run)", "time_per_dof.png")
 
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    for scene, marker in (("bar", "o"), ("twist", "s")):
+    for scene, marker in SCENE_MARKERS:
         one = {int(r["n"]): r for r in series(scene, 1)}
         two = {int(r["n"]): r for r in series(scene, 2)}
         common = sorted(set(one) & set(two))
@@ -179,6 +208,9 @@ def main():
     parser.add_argument("--quick", action="store_true", help="small sizes only")
     parser.add_argument("--degrees", action="store_true",
                         help="P1 against P2 on the manufactured solution")
+    parser.add_argument("--scenes", nargs="+", choices=SCENES, default=list(SCENES),
+                        help="run only these scenes; the other scenes' rows of "
+                             "results.csv are kept")
     args = parser.parse_args()
 
     if args.degrees:
@@ -192,19 +224,26 @@ def main():
         if not os.path.exists(EXE):
             sys.exit("build first: scripts/build.sh (Release)")
         sizes = QUICK_SIZES if args.quick else SIZES
+        file_sizes = QUICK_FILE_SIZES if args.quick else FILE_SIZES
         lines = [header()]
-        for scene in ("bar", "twist"):
-            for n in sizes:
+        for scene in args.scenes:
+            two_rank_min = FILE_TWO_RANK_MIN_N if scene == "twist_file" else TWO_RANK_MIN_N
+            for n in file_sizes if scene == "twist_file" else sizes:
                 for ranks in (1, 2):
-                    if ranks == 2 and n < TWO_RANK_MIN_N and not args.quick:
+                    if ranks == 2 and n < two_rank_min and not args.quick:
                         continue
                     line = run_one(scene, n, ranks)
                     print(line, flush=True)
                     lines.append(line)
         rows = list(csv.DictReader(lines))
+        if set(args.scenes) != set(SCENES) and os.path.exists(CSV):
+            with open(CSV) as f:
+                kept = [r for r in csv.DictReader(f) if r["scene"] not in args.scenes]
+            rows = kept + rows
         richardson_twist_errors(rows)
         with open(CSV, "w", newline="") as f:
-            writer = csv.DictWriter(f, fieldnames=rows[0].keys())
+            fields = list(csv.DictReader(lines).fieldnames)
+            writer = csv.DictWriter(f, fieldnames=fields, restval="")
             writer.writeheader()
             writer.writerows(rows)
         print("results: benchmarks/results.csv")

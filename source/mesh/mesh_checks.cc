@@ -5,6 +5,7 @@
 #include <deal.II/base/timer.h>
 
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/mesh/cell_ordering.h>
 #include <hyperelastic/mesh/gmsh_reader.h>
 #include <hyperelastic/mesh/mesh_checks.h>
 
@@ -438,6 +439,10 @@ namespace hyperelastic
     mesh.cells           = std::move(file.cells);
     mesh.boundary        = std::move(file.boundary);
     mesh.element_numbers = std::move(file.element_numbers);
+    order_cells_along_curve(mesh.vertices,
+                            mesh.cells,
+                            mesh.element_numbers,
+                            mesh.boundary);
 
     // Zero measure and orientation as listed; negatively oriented cells
     // reoriented as deal.II's GridIn does it (last two vertices swapped).

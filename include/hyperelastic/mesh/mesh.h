@@ -50,6 +50,8 @@ namespace hyperelastic
   ///
   /// A gmsh file may list the vertices of its cells in any order: cells
   /// listed with negative orientation are reoriented (two vertices swapped).
+  /// Its cells are sorted along a Morton curve (order_cells_along_curve()),
+  /// so that the unknowns deal.II numbers cell by cell are local in memory.
   /// Rejected with InputError: unreadable files, cells of zero area or
   /// volume, folded meshes (two cells on the same side of their shared face,
   /// as when a node is pushed through a face) and 2D meshes whose nodes do
