@@ -24,7 +24,7 @@ namespace hyperelastic
     unsigned int     max_iterations        = 1000;
     std::string      direct_solver         = "Amesos_Klu";
     double           aggregation_threshold = 1e-4;
-    unsigned int     smoother_sweeps       = 2;
+    unsigned int     smoother_sweeps       = 1;
     /// ML's smoothed aggregation; false: plain aggregation (prolongator
     /// damping 0).
     bool smoothed_aggregation = true;
