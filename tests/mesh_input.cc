@@ -583,10 +583,7 @@ namespace
     };
     const auto   before        = cells_as_listed();
     const double spread_before = mean_spread();
-    order_cells_along_curve(mesh.vertices,
-                            mesh.cells,
-                            mesh.element_numbers,
-                            mesh.boundary);
+    order_cells_along_curve(mesh);
     const double       spread_after = mean_spread();
     std::ostringstream text;
     text << dim << "D " << file.substr(file.rfind('/') + 1)

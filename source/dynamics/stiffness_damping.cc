@@ -2,7 +2,6 @@
 #include <hyperelastic/assembly/rest_stiffness.h>
 #include <hyperelastic/dynamics/stiffness_damping.h>
 
-
 namespace hyperelastic
 {
   using namespace dealii;

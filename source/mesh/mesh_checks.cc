@@ -434,15 +434,12 @@ namespace hyperelastic
     if (dim == 2)
       check_plane(where, file.lower, file.upper);
 
+    order_cells_along_curve(file);
     CheckedMesh<dim> mesh;
     mesh.vertices        = std::move(file.vertices);
     mesh.cells           = std::move(file.cells);
     mesh.boundary        = std::move(file.boundary);
     mesh.element_numbers = std::move(file.element_numbers);
-    order_cells_along_curve(mesh.vertices,
-                            mesh.cells,
-                            mesh.element_numbers,
-                            mesh.boundary);
 
     // Zero measure and orientation as listed; negatively oriented cells
     // reoriented as deal.II's GridIn does it (last two vertices swapped).

@@ -39,27 +39,42 @@ namespace hyperelastic::testing
     return names;
   }
 
+  /// MPI set up, DIM read from argument @p dim_position (default 3; 2 or 3,
+  /// else an input error), @p run(dim, checker, print) with one Checker
+  /// (print: on rank 0), exceptions turned into messages on every rank;
+  /// returns the exit status.
+  template <typename Run>
+  int
+  run_for_dimension(int argc, char **argv, const int dim_position, Run &&run)
+  {
+    dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    const bool print = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    const int  dim   = argc > dim_position ? std::atoi(argv[dim_position]) : 3;
+    Checker    checker(print);
+    const int  status = run_and_report(
+      [&]() {
+        if (dim != 2 && dim != 3)
+          throw InputError(std::string("the ") +
+                           (dim_position == 1 ? "first" : "second") +
+                           " argument must be the dimension, 2 or 3");
+        run(dim, checker, print);
+      },
+      MPI_COMM_WORLD);
+    return checker.exit_code(status);
+  }
+
   /// Runs @p check_2d or @p check_3d (each called as (checker, print)) by
   /// the first argument; DIM defaults to 3.
   template <typename Check2D, typename Check3D>
   int
   run_checks_for_dimension(int argc, char **argv, Check2D &&check_2d, Check3D &&check_3d)
   {
-    dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-    const bool print = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    const int  dim   = argc > 1 ? std::atoi(argv[1]) : 3;
-    Checker    checker(print);
-    const int  status = run_and_report(
-      [&]() {
-        if (dim != 2 && dim != 3)
-          throw InputError("the first argument must be the dimension, 2 or 3");
-        if (dim == 2)
-          check_2d(checker, print);
-        else
-          check_3d(checker, print);
-      },
-      MPI_COMM_WORLD);
-    return checker.exit_code(status);
+    return run_for_dimension(argc, argv, 1, [&](const int dim, Checker &checker, const bool print) {
+      if (dim == 2)
+        check_2d(checker, print);
+      else
+        check_3d(checker, print);
+    });
   }
 
   /// For test programs called as 'PROGRAM CASE DIM': runs
@@ -73,20 +88,12 @@ namespace hyperelastic::testing
                          Run2D            &&run_2d,
                          Run3D            &&run_3d)
   {
-    dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-    Checker checker(dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
-    const std::string which  = argc > 1 ? argv[1] : default_case;
-    const int         dim    = argc > 2 ? std::atoi(argv[2]) : 3;
-    const int         status = run_and_report(
-      [&]() {
-        if (dim != 2 && dim != 3)
-          throw InputError("the second argument must be the dimension, 2 or 3");
-        if (dim == 2)
-          run_2d(which, checker);
-        else
-          run_3d(which, checker);
-      },
-      MPI_COMM_WORLD);
-    return checker.exit_code(status);
+    const std::string which = argc > 1 ? argv[1] : default_case;
+    return run_for_dimension(argc, argv, 2, [&](const int dim, Checker &checker, bool) {
+      if (dim == 2)
+        run_2d(which, checker);
+      else
+        run_3d(which, checker);
+    });
   }
 } // namespace hyperelastic::testing

@@ -3,18 +3,15 @@
 // numbers cell by cell) are near each other in memory.
 #pragma once
 
-#include <deal.II/base/point.h>
-#include <deal.II/grid/tria_description.h>
-
-#include <vector>
+#include <hyperelastic/mesh/gmsh_reader.h>
 
 namespace hyperelastic
 {
-  /// Sorts @p cells (and @p element_numbers with them) by the Morton
-  /// (Z-order) key of their centroids in the bounding box of @p vertices,
-  /// then renumbers the vertices in the order the sorted cells first use
-  /// them (vertices no cell uses keep their relative order, after the
-  /// others), in @p cells and in the faces of @p boundary.
+  /// Sorts the cells of @p mesh (and their element numbers) by the Morton
+  /// (Z-order) key of their centroids in the mesh's bounding box, then
+  /// renumbers the vertices in the order the sorted cells first use them
+  /// (vertices no cell uses keep their relative order, after the others),
+  /// in the cells and in the boundary faces.
   ///
   /// A mesh generator's cell order follows its meshing front, not space:
   /// deal.II numbers the unknowns cell by cell in the order of the coarse
@@ -24,17 +21,5 @@ namespace hyperelastic
   /// result are unchanged; only the numbering (hence round-off) differs.
   template <int dim>
   void
-  order_cells_along_curve(std::vector<dealii::Point<dim>>    &vertices,
-                          std::vector<dealii::CellData<dim>> &cells,
-                          std::vector<long long>             &element_numbers,
-                          dealii::SubCellData                &boundary);
-
-  /// The Morton key of @p x in the box [@p lower, @p upper]: the bits of
-  /// the coordinates' positions on a grid of 2^(63/dim) points per
-  /// direction, interleaved (NaN and points outside the box are clamped).
-  template <int dim>
-  unsigned long long
-  morton_key(const dealii::Point<dim> &x,
-             const dealii::Point<dim> &lower,
-             const dealii::Point<dim> &upper);
+  order_cells_along_curve(GmshMesh<dim> &mesh);
 } // namespace hyperelastic
