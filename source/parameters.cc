@@ -4,6 +4,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/formulation/formulation_registry.h>
 #include <hyperelastic/loads/load_terms.h>
 #include <hyperelastic/materials/material_registry.h>
 #include <hyperelastic/parameters.h>
@@ -17,70 +18,6 @@
 namespace hyperelastic
 {
   using namespace entry_patterns;
-
-  // ---------------------------------------------------------------- Problem
-  void
-  ProblemParameters::declare(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Problem");
-    prm.declare_entry("Dimension",
-                      "3",
-                      Integer(2, 3),
-                      "Space dimension: 2 (plane strain, triangles) or 3 "
-                      "(tetrahedra).");
-    prm.declare_entry("Finite element degree",
-                      "1",
-                      Integer(1, 2),
-                      "Polynomial degree of the simplex Lagrange element: 1 "
-                      "(P1, linear) or 2 (P2, quadratic).");
-    prm.declare_entry(
-      "Assembly",
-      "automatic",
-      Selection("automatic|generic"),
-      "'automatic': P1 forces, tangent and energy from the precomputed P1 "
-      "kernel (hat-function gradients and volumes stored per cell, values "
-      "written straight into the matrix rows), P2 from FEValues. 'generic': "
-      "FEValues for every degree (several times slower for P1; the reference "
-      "the kernel is tested against).");
-    prm.declare_entry(
-      "Formulation",
-      "displacement",
-      Selection("displacement|mixed"),
-      "'displacement': the displacement is the only unknown (the default). "
-      "'mixed': displacement and pressure p (the Cauchy mean stress) with "
-      "the volumetric-isochoric split psi = psi_iso(F) + U(J), coupled through "
-      "the Legendre transform of U (exact for any U, see "
-      "doc/manual.md, 'Mixed formulation'): for nearly incompressible "
-      "solids (nu > 0.45), where P1 locks and AMG stalls. Needs a model with "
-      "a split (decoupled neo-Hookean, Mooney-Rivlin); the element is then "
-      "'Mixed element', and 'Finite element degree' is ignored.");
-    prm.declare_entry(
-      "Mixed element",
-      "P1-bubble/P1",
-      Selection("P1-bubble/P1|P1/P1 stabilized|P2/P1"),
-      "The displacement/pressure pair of 'Formulation = mixed': "
-      "'P1-bubble/P1' (MINI: P1 plus a cell bubble, condensed on the cell, "
-      "so the system holds P1 unknowns only), 'P1/P1 stabilized' (equal "
-      "order with Dohrmann-Bochev pressure-projection stabilisation "
-      "-1/mu int (p - Pi0 p)(q - Pi0 q)), 'P2/P1' (Taylor-Hood). All are "
-      "inf-sup stable in 2D and 3D.");
-    prm.leave_subsection();
-  }
-
-  void
-  ProblemParameters::parse(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Problem");
-    dimension = prm.get_integer("Dimension");
-    fe_degree = prm.get_integer("Finite element degree");
-    fast_p1_assembly = prm.get("Assembly") == "automatic";
-    mixed            = prm.get("Formulation") == "mixed";
-    const std::string element = prm.get("Mixed element");
-    mixed_element = element == "P2/P1"              ? MixedElement::taylor_hood
-                    : element == "P1/P1 stabilized" ? MixedElement::stabilized
-                                                    : MixedElement::mini;
-    prm.leave_subsection();
-  }
 
   // ------------------------------------------------------------ Parameters
   void
@@ -134,11 +71,6 @@ namespace hyperelastic
                    std::to_string(mesh.upper_corner[d]),
                    "every coordinate must exceed the lower corner's");
       }
-    if (time_integration.dynamic() && problem.mixed)
-      reject("Time integration/Scheme",
-             time_integration.scheme_name(),
-             "implicit dynamics is not available with 'Problem/Formulation "
-             "= mixed' yet");
     if (!time_integration.initial_velocity.empty() &&
         time_integration.initial_velocity.size() != dim)
       reject("Time integration/Initial velocity",
@@ -156,8 +88,7 @@ namespace hyperelastic
                  "there is no z component in 2D");
     for (const auto &c : loading.boundary_loads)
       {
-        const bool vector_valued =
-          boundary_load_kind(c.kind).vector_valued;
+        const bool vector_valued = boundary_load_kind(c.kind).vector_valued;
         if (vector_valued && c.expressions.size() != dim)
           reject(c.subsection + "/" + c.kind,
                  size(c.expressions) + " expressions",
@@ -168,53 +99,23 @@ namespace hyperelastic
                  size(c.expressions) + " expressions",
                  "needs one expression");
       }
-    // Stiffness warping rotates the rest stiffness per vertex: P1 nodes
-    // only, no pressure unknown.
-    if (material.stiffness_warping && problem.mixed)
-      reject("Problem/Formulation",
-             "mixed",
-             "'Material/Model = stiffness warping' works with the "
-             "displacement formulation only");
-    if (material.stiffness_warping && problem.fe_degree != 1)
-      reject("Problem/Finite element degree",
-             std::to_string(problem.fe_degree),
-             "'Material/Model = stiffness warping' needs P1 elements (one "
-             "rotation per vertex)");
-    // The mixed formulation needs the model's volumetric split.
-    if (problem.mixed)
+    // 'Material/Model = stiffness warping' is an alias of the stiffness
+    // warping formulation with the corotational model.
+    if (material.stiffness_warping)
       {
-        if (!material_model(material.registered_model()).has_volumetric_split)
-          {
-            std::string with_split;
-            for (const MaterialModel &m : material_models())
-              if (m.has_volumetric_split)
-                with_split += (with_split.empty() ? "'" : ", '") + m.name + "'";
-            reject("Problem/Formulation",
-                   "mixed",
-                   "the " + material.model +
-                     " model has no volumetric-isochoric split psi = "
-                     "psi_iso(F) + U(J); use a model with one (" +
-                     with_split + ") or 'Formulation = displacement'");
-          }
-        problem.fe_degree = displacement_degree(problem.mixed_element);
+        if (problem.formulation == "mixed")
+          reject("Problem/Formulation",
+                 "mixed",
+                 "'Material/Model = stiffness warping' works with the "
+                 "displacement formulation only");
+        problem.formulation = "stiffness warping";
       }
-    // Exact incompressibility needs the pressure as an unknown.
-    if (!problem.mixed && !material.incompressible_entry.empty())
-      reject(material.incompressible_entry,
-             material.incompressible_value,
-             std::string(material.incompressible_entry ==
-                             "Material/Poisson's ratio" ?
-                           "must lie strictly between -1 and 0.5 with the "
-                           "displacement formulation; " :
-                           "is exactly incompressible; ") +
-               "an exactly incompressible material (nu = 0.5, bulk modulus "
-               "'inf') needs 'Problem/Formulation = mixed' (and a model with "
-               "a volumetric split)");
+    formulation_kind(problem.formulation).check(*this);
     // Accepting inverted equilibria needs a model defined at J <= 0.
     if (newton.inverted_elements == InvertedElements::warn)
       {
-        const bool defined =
-          material_model(material.registered_model()).defined_for_inverted_elements;
+        const bool defined = material_model(material.registered_model())
+                               .defined_for_inverted_elements;
         if (!defined)
           reject("Newton/Inverted elements at equilibrium",
                  "warn",

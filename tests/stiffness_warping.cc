@@ -321,6 +321,11 @@ namespace
     auto corotational = run_scene<dim>(scene("corotational", "false"));
     auto warped       = run_scene<dim>(scene("stiffness warping", "false"));
     auto once         = run_scene<dim>(scene("stiffness warping", "true"));
+    // The formulation entry with the corotational model: the same run as the
+    // alias 'Material/Model = stiffness warping'.
+    auto formulation = run_scene<dim>(
+      scene("corotational", "false") +
+      subsection("Problem", entry("Formulation", "stiffness warping")));
 
     const auto tip = [](const StepSummary<dim> &s) {
       return s.point_displacements[0][dim - 1];
@@ -341,6 +346,18 @@ namespace
     checker.at_most(tag + "max |tip_warping - tip_corotational| / max |tip|",
                     band / amplitude,
                     5e-2);
+    double alias_difference = 0.;
+    for (unsigned int k = 0; k < w.size(); ++k)
+      alias_difference =
+        std::max(alias_difference,
+                 std::abs(tip(formulation->summaries()[k]) - tip(w[k])));
+    checker.is_true(tag + "Problem/Formulation = stiffness warping: as many "
+                          "steps as the alias",
+                    formulation->summaries().size() == w.size());
+    checker.at_most(tag + "Problem/Formulation = stiffness warping with the "
+                          "corotational model: max |tip - tip_alias|",
+                    alias_difference,
+                    0.);
     checker.is_true(tag + "linearized once: one Newton iteration per step",
                     most == 1);
     checker.at_most(tag + "max |tip_linearized - tip_full| / max |tip|",

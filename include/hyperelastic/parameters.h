@@ -1,17 +1,16 @@
-// The scene: every parameter a .prm file can set. Each subsection's struct lives
-// next to the code that uses it; this header only aggregates them (and holds
-// the Problem subsection, which chooses the dimension and the element).
+// The scene: every parameter a .prm file can set. Each subsection's struct
+// lives next to the code that uses it; this header only aggregates them.
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <hyperelastic/assembly/mixed_assembler.h>
+#include <hyperelastic/dynamics/time_integration_parameters.h>
+#include <hyperelastic/formulation/formulation_parameters.h>
 #include <hyperelastic/loads/loading_parameters.h>
 #include <hyperelastic/materials/material_parameters.h>
 #include <hyperelastic/mesh/mesh_parameters.h>
 #include <hyperelastic/output/output_parameters.h>
 #include <hyperelastic/solvers/linear_solver_parameters.h>
-#include <hyperelastic/dynamics/time_integration_parameters.h>
 #include <hyperelastic/solvers/load_stepping_parameters.h>
 #include <hyperelastic/solvers/newton_parameters.h>
 
@@ -21,35 +20,18 @@ namespace hyperelastic
 {
   using dealii::ParameterHandler;
 
-  struct ProblemParameters
-  {
-    unsigned int dimension = 3;
-    unsigned int fe_degree = 1;
-    /// Use the precomputed P1 kernel when the degree is 1 ("Assembly =
-    /// automatic"); false: the generic FEValues loops for every degree.
-    bool fast_p1_assembly = true;
-    /// "Formulation = mixed": displacement and pressure unknowns.
-    bool         mixed         = false;
-    MixedElement mixed_element = MixedElement::mini;
-
-    static void
-    declare(ParameterHandler &prm);
-    void
-    parse(ParameterHandler &prm);
-  };
-
   /// All subsections of a scene.
   struct Parameters
   {
-    ProblemParameters      problem;
-    MeshParameters         mesh;
-    MaterialParameters     material;
-    LoadingParameters      loading;
-    NewtonParameters       newton;
-    LoadSteppingParameters load_stepping;
+    ProblemParameters         problem;
+    MeshParameters            mesh;
+    MaterialParameters        material;
+    LoadingParameters         loading;
+    NewtonParameters          newton;
+    LoadSteppingParameters    load_stepping;
     TimeIntegrationParameters time_integration;
-    LinearSolverParameters linear_solver;
-    OutputParameters       output;
+    LinearSolverParameters    linear_solver;
+    OutputParameters          output;
 
     static void
     declare(ParameterHandler &prm);

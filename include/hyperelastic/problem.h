@@ -1,7 +1,9 @@
-// A scene run end to end: mesh, dofs, material and loads from the parameters,
-// then for each load step a Newton solve, post-processing and output. This
-// class is the SteppedSystem that the Newton solver and the load stepper
-// drive.
+// A scene run end to end: the orchestrator. It builds the mesh, the
+// formulation's element and dofs, the material, the loads, the operator, the
+// time-stepping driver and the equilibrium system, lets the load stepper and
+// Newton drive that system, and after each converged step has the summary
+// measured and the output written. Every choice of formulation or scheme
+// lives behind Formulation and TimeStepping.
 #pragma once
 
 #include <deal.II/base/conditional_ostream.h>
@@ -13,15 +15,14 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <hyperelastic/assembly/elasticity_operator.h>
-#include <hyperelastic/dynamics/inertia.h>
-#include <hyperelastic/dynamics/motion.h>
-#include <hyperelastic/dynamics/stiffness_damping.h>
-#include <hyperelastic/dynamics/time_integrator.h>
+#include <hyperelastic/dynamics/time_stepping.h>
+#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/formulation/formulation.h>
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/materials/material.h>
-#include <hyperelastic/output/cell_fields.h>
 #include <hyperelastic/output/output.h>
-#include <hyperelastic/output/point_values.h>
+#include <hyperelastic/output/step_postprocessor.h>
+#include <hyperelastic/output/step_summary.h>
 #include <hyperelastic/parameters.h>
 #include <hyperelastic/solvers/linear_solver.h>
 #include <hyperelastic/solvers/load_stepping.h>
@@ -36,7 +37,7 @@
 namespace hyperelastic
 {
   template <int dim>
-  class Problem : public SteppedSystem
+  class Problem
   {
   public:
     /// @p print: whether rank 0 prints progress (tests may switch it off).
@@ -96,7 +97,7 @@ namespace hyperelastic
     unsigned int
     n_secant_predictions() const
     {
-      return secant_predictions;
+      return stepping->n_predictions();
     }
 
     /// Which linear solver runs (the run header's line).
@@ -110,84 +111,39 @@ namespace hyperelastic
     const MatrixType &
     tangent_matrix() const
     {
-      return tangent;
+      return system->tangent_matrix();
     }
 
     /// The displacement with ghost entries.
     const VectorType &
     solution() const
     {
-      return u_ghosted;
+      return system->solution();
     }
-
-    // NonlinearSystem
-    bool
-    assemble_linearization(bool impose_constraint_increment,
-                           bool positive_semidefinite) override;
-    unsigned int
-    solve_linearization(double forcing) override;
-    bool
-    is_linear() const override;
-    bool
-    has_potential() const override;
-    std::string
-    why_no_potential() const override;
-    double
-    directional_derivative() const override;
-    TrialPoint
-    evaluate_trial(double alpha, TrialCheck check) override;
-    double
-    accept_trial() override;
-    ResidualNorms
-    residual_norms() override;
-    double
-    solution_scale() const override;
-    void
-    verify_converged_state() override;
-
-    // SteppedSystem
-    void
-    set_load_factor(double t) override;
-    void
-    store_converged_state() override;
-    void
-    restore_converged_state() override;
 
   private:
     void
     solve_all_load_steps();
     void
     setup();
+    /// The run header: element, size, ranks, material, solver, loads.
     void
-    warn_about_volumetric_locking() const;
-    /// The mixed formulation's block preconditioner for this mesh: the
-    /// pressure unknowns and (1/mu) times the lumped pressure mass.
-    std::unique_ptr<SaddlePointPreconditioner>
-    saddle_point_preconditioner() const;
+    print_header() const;
     StepSummary<dim>
     summarize(const LoadStep &step, const NewtonResult &newton_result);
     void
     write_fields(unsigned int step);
-    /// Assembles the forces at u_ghosted into internal_force, external_force
-    /// and residual; returns the residual norm on the free unknowns and its
-    /// round-off level in @p noise.
-    double
-    free_residual_norm(double &noise);
 
     const Parameters           parameters;
     const MPI_Comm             comm;
     dealii::ConditionalOStream pcout;
     dealii::TimerOutput        timer;
 
+    const std::unique_ptr<Formulation<dim>>                formulation;
     dealii::parallel::fullydistributed::Triangulation<dim> triangulation;
-    /// (P_k)^dim, and for the mixed formulation a P1 pressure after it.
-    const dealii::FESystem<dim> fe;
+    const dealii::FESystem<dim>                            fe;
     const dealii::MappingFE<dim>                           mapping;
     dealii::DoFHandler<dim>                                dof_handler;
-    dealii::IndexSet                                       owned_dofs;
-    dealii::IndexSet                                       relevant_dofs;
-    /// Mixed formulation: the pressure unknowns among the relevant ones.
-    dealii::IndexSet pressure_dofs;
 
     std::unique_ptr<Material<dim>> material;
     /// The same model in 3D, for the plane-strain stress in the output
@@ -196,83 +152,12 @@ namespace hyperelastic
     std::unique_ptr<BoundaryConditions<dim>>       boundary_conditions;
     std::function<void(BoundaryConditions<dim> &)> load_editor;
     std::unique_ptr<ElasticityOperator<dim>>       elasticity;
+    std::unique_ptr<TimeStepping<dim>>             stepping;
+    std::unique_ptr<EquilibriumSystem<dim>>        system;
+    std::unique_ptr<StepPostprocessor<dim>>        postprocessor;
     std::unique_ptr<OutputWriter<dim>>             writer;
-    /// The points of 'Output/Points', located once (null if there are none).
-    std::unique_ptr<PointValues<dim>> point_values;
-    LinearSolver                      linear_solver;
-    NewtonSolver                      newton;
-
-    /// Dirichlet constraints: with the increment to the prescribed values
-    /// (first iteration of a load step) and homogeneous (later iterations);
-    /// active_constraints points at the ones of the current linearization.
-    dealii::AffineConstraints<double>        increment_constraints;
-    dealii::AffineConstraints<double>        homogeneous_constraints;
-    const dealii::AffineConstraints<double> *active_constraints = nullptr;
-
-    /// The distinct Dirichlet boundary ids and, for each, the owned dofs on
-    /// it whose component is prescribed there, with that component (for the
-    /// reaction forces).
-    std::vector<dealii::types::boundary_id> reaction_ids;
-    std::vector<
-      std::vector<std::pair<dealii::types::global_dof_index, unsigned int>>>
-      reaction_dofs;
-
-    MatrixType tangent;
-    /// u: the current iterate; update: Newton's direction; trial: the
-    /// line search's candidate u + alpha update; u_ghosted: whichever of u
-    /// and trial was evaluated last, with ghost entries.
-    VectorType u, u_ghosted, update, trial, rhs;
-    VectorType internal_force, external_force, residual;
-    double     load_factor = 0.;
-    double     step_length = 1.; ///< of the last evaluated trial
-    /// Running maxima of the force and displacement norms (Newton's scales).
-    double force_scale   = 0.;
-    double solution_size = 0.;
-    /// Smallest J of the last converged state, and how many cells have
-    /// J <= 0 there (non-zero only when such states are accepted).
-    double                           converged_min_J          = 1.;
-    dealii::types::global_cell_index converged_inverted_cells = 0;
-
-    /// A converged state: the last one, to return to after a failed load
-    /// step, and the one before it (the secant predictor's other point).
-    struct ConvergedState
-    {
-      VectorType u;
-      double     force_scale   = 0.;
-      double     solution_size = 0.;
-      double     load_factor   = 0.;
-      bool       valid         = false;
-    } converged, previous;
-
-    /// 'Load stepping/Predictor = secant': moves u from the last converged
-    /// state along its last increment to load factor @p t, unless an element
-    /// of the prediction has J <= 0.
-    void
-    predict(double t);
-    unsigned int secant_predictions = 0;
-
-    /// Implicit dynamics ('Time integration/Scheme' other than
-    /// quasi-static; nothing of it exists otherwise): the inertia term (owned
-    /// by the operator), the scheme, velocity and acceleration of the last
-    /// converged state, the momenta.
-    void
-    setup_dynamics();
-    /// The time step to t: the inertia term's target.
-    void
-    begin_time_step(double t);
-    InertiaTerm<dim>               *inertia = nullptr;
-    /// 'Time integration/Stiffness damping' > 0 only (owned by the
-    /// operator).
-    StiffnessDampingTerm<dim> *stiffness_damping = nullptr;
-    std::unique_ptr<TimeIntegrator> integrator;
-    std::unique_ptr<Motion<dim>>    motion;
-    VectorType velocity, acceleration, new_velocity, new_acceleration;
-    /// The velocity with ghost entries (momenta and VTU), set once per
-    /// converged step.
-    VectorType velocity_ghosted;
-    /// The end of the time step being solved (the load factor is the time
-    /// the equations are solved at: the midpoint for implicit midpoint).
-    double step_end_time = 0.;
+    LinearSolver                                   linear_solver;
+    NewtonSolver                                   newton;
 
     std::vector<StepSummary<dim>> step_summaries;
   };

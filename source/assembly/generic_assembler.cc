@@ -7,8 +7,8 @@
 
 #include <hyperelastic/assembly/cell_loop.h>
 #include <hyperelastic/assembly/generic_assembler.h>
+#include <hyperelastic/assembly/material_point.h>
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/materials/tangent_projection.h>
 
 #include <cmath>
 #include <limits>
@@ -133,11 +133,9 @@ namespace hyperelastic
       cell_rhs    = 0.;
       for (unsigned int q = 0; q < data.F.size(); ++q)
         {
-          material.stress_and_tangent(data.F[q], P, A);
-          if (!stress_and_tangent_finite(P, A))
+          if (!stress_and_tangent_at(
+                material, data.F[q], project_tangent, P, A))
             throw std::domain_error(non_finite_stress_message());
-          if (project_tangent)
-            project_to_positive_semidefinite(A);
           const double JxW = data.values.JxW(q);
           for (unsigned int i = 0; i < n; ++i)
             grad[i] = data.gradient(i, q);
@@ -184,15 +182,11 @@ namespace hyperelastic
           round_off.add_energy(psi, data.F[q], JxW);
         }
     });
-    const MPI_Comm   comm = dof_handler.get_communicator();
-    EnergyEvaluation result;
-    result.min_J = Utilities::MPI::min(min_J, comm);
-    if (with_energy)
-      {
-        result.energy = Utilities::MPI::sum(energy, comm);
-        result.noise  = round_off.energy_noise(comm);
-      }
-    return result;
+    return reduce_energy_evaluation(min_J,
+                                    with_energy,
+                                    energy,
+                                    round_off.local_energy_magnitude(),
+                                    dof_handler.get_communicator());
   }
 
   template class GenericAssembler<2>;

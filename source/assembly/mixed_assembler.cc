@@ -6,9 +6,9 @@
 #include <deal.II/lac/vector.h>
 
 #include <hyperelastic/assembly/cell_loop.h>
+#include <hyperelastic/assembly/material_point.h>
 #include <hyperelastic/assembly/mixed_assembler.h>
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/materials/tangent_projection.h>
 
 #include <cmath>
 #include <limits>
@@ -16,12 +16,6 @@
 namespace hyperelastic
 {
   using namespace dealii;
-
-  unsigned int
-  displacement_degree(const MixedElement element)
-  {
-    return element == MixedElement::taylor_hood ? 2 : 1;
-  }
 
   namespace
   {
@@ -71,7 +65,7 @@ namespace hyperelastic
     {
       values.reinit(cell);
       cell->get_dof_indices(dofs);
-      diameter = cell->diameter();
+      diameter   = cell->diameter();
       cell_index = cell->active_cell_index();
       for (unsigned int q = 0; q < grad.size(); ++q)
         {
@@ -112,7 +106,7 @@ namespace hyperelastic
     std::vector<std::vector<Tensor<1, dim>>> grad;
     /// [q][i]: value of pressure shape function i (0 for u unknowns).
     std::vector<std::vector<double>> psi;
-    double                           diameter = 0.;
+    double                           diameter   = 0.;
     unsigned int                     cell_index = 0;
 
     // Results of evaluate_cell().
@@ -154,21 +148,21 @@ namespace hyperelastic
   {
     const bool with_matrix = output != CellOutput::residual;
     // The bubble's block: its rows and columns only, no energy.
-    const bool         bubble_only = output == CellOutput::bubble_block;
-    const unsigned int first       = bubble_only ? data.n : 0;
-    const unsigned int n_total     = data.n + data.n_bubble;
-    const Material<dim> &iso     = *split->isochoric;
-    const auto          &vol     = split->volumetric;
-    data.residual                = 0.;
+    const bool           bubble_only = output == CellOutput::bubble_block;
+    const unsigned int   first       = bubble_only ? data.n : 0;
+    const unsigned int   n_total     = data.n + data.n_bubble;
+    const Material<dim> &iso         = *split->isochoric;
+    const auto          &vol         = split->volumetric;
+    data.residual                    = 0.;
     if (with_matrix)
       data.matrix = 0.;
     data.energy    = 0.;
     data.min_J     = std::numeric_limits<double>::infinity();
     data.force_sum = 0.;
 
-    Tensor<2, dim>     P;
-    StressTangent<dim> A;
-    double             volume = 0., p_mean = 0.;
+    Tensor<2, dim>      P;
+    StressTangent<dim>  A;
+    double              volume = 0., p_mean = 0.;
     std::vector<double> p_q(quadrature.size());
     for (unsigned int q = 0; q < quadrature.size(); ++q)
       {
@@ -195,17 +189,14 @@ namespace hyperelastic
             // Outside the model's domain: no finite residual.
             for (auto &r : data.residual)
               r = std::numeric_limits<double>::quiet_NaN();
-            data.energy   = std::numeric_limits<double>::infinity();
+            data.energy = std::numeric_limits<double>::infinity();
             return;
           }
         const Tensor<2, dim> JG = J * transpose(invert(F));
         if (with_matrix)
           {
-            iso.stress_and_tangent(F, P, A);
-            if (!stress_and_tangent_finite(P, A))
+            if (!stress_and_tangent_at(iso, F, project_tangent, P, A))
               throw std::domain_error(non_finite_stress_message());
-            if (project_tangent)
-              project_to_positive_semidefinite(A);
             // p d(J G)/dF = p/J (JG (x) JG - JG [x] JG).
             const double pJ = p / J;
             for (unsigned int i = 0; i < dim; ++i)
@@ -324,8 +315,8 @@ namespace hyperelastic
         if (step <= 1e-14 * data.diameter)
           return BubbleOutcome::converged;
       }
-    return step <= 1e-10 * data.diameter ? BubbleOutcome::converged :
-                                           BubbleOutcome::not_converged;
+    return step <= 1e-10 * data.diameter ? BubbleOutcome::converged
+                                         : BubbleOutcome::not_converged;
   }
 
   template <int dim>
@@ -413,8 +404,8 @@ namespace hyperelastic
         solve_bubble(data, with_matrix, project_tangent);
       else
         evaluate_cell(data,
-                      with_matrix ? CellOutput::residual_and_matrix :
-                                    CellOutput::residual,
+                      with_matrix ? CellOutput::residual_and_matrix
+                                  : CellOutput::residual,
                       project_tangent);
       worker(data);
     });
@@ -425,9 +416,9 @@ namespace hyperelastic
   MixedAssembler<dim>::internal_forces(const VectorType &u,
                                        VectorType       &internal) const
   {
-    internal = 0.;
-    const double modulus = material.small_strain_moduli().mu;
-    double       squared = 0.;
+    internal               = 0.;
+    const double   modulus = material.small_strain_moduli().mu;
+    double         squared = 0.;
     Vector<double> cell_residual(dof_handler.get_fe().dofs_per_cell);
     for_each_cell(u, false, false, [&](CellData &data) {
       for (unsigned int i = 0; i < data.n; ++i)
@@ -443,22 +434,23 @@ namespace hyperelastic
     });
     internal.compress(VectorOperation::add);
     return std::numeric_limits<double>::epsilon() *
-           std::sqrt(Utilities::MPI::sum(squared, dof_handler.get_communicator()));
+           std::sqrt(
+             Utilities::MPI::sum(squared, dof_handler.get_communicator()));
   }
 
   template <int dim>
   bool
   MixedAssembler<dim>::system(const VectorType                &u,
                               const AffineConstraints<double> &constraints,
-                              const bool  project_tangent,
-                              MatrixType &matrix,
-                              VectorType &rhs) const
+                              const bool                       project_tangent,
+                              MatrixType                      &matrix,
+                              VectorType                      &rhs) const
   {
-    matrix                = 0.;
-    rhs                   = 0.;
-    const unsigned int  n = dof_handler.get_fe().dofs_per_cell;
-    FullMatrix<double>  cell_matrix(n, n);
-    Vector<double>      cell_rhs(n);
+    matrix               = 0.;
+    rhs                  = 0.;
+    const unsigned int n = dof_handler.get_fe().dofs_per_cell;
+    FullMatrix<double> cell_matrix(n, n);
+    Vector<double>     cell_rhs(n);
     for_each_cell(u, true, project_tangent, [&](CellData &data) {
       if (!(data.min_J > 0.))
         throw std::domain_error(non_finite_stress_message());
@@ -482,21 +474,14 @@ namespace hyperelastic
                                      const bool        with_energy) const
   {
     double energy = 0., magnitude = 0.;
-    double min_J  = std::numeric_limits<double>::infinity();
+    double min_J = std::numeric_limits<double>::infinity();
     for_each_cell(u, false, false, [&](CellData &data) {
       min_J = std::min(min_J, data.min_J);
       energy += data.energy;
       magnitude += std::abs(data.energy);
     });
-    const MPI_Comm   comm = dof_handler.get_communicator();
-    EnergyEvaluation result;
-    result.min_J = Utilities::MPI::min(min_J, comm);
-    if (with_energy)
-      {
-        result.energy = Utilities::MPI::sum(energy, comm);
-        result.noise  = 1e-13 * Utilities::MPI::sum(magnitude, comm);
-      }
-    return result;
+    return reduce_energy_evaluation(
+      min_J, with_energy, energy, magnitude, dof_handler.get_communicator());
   }
 
   template class MixedAssembler<2>;

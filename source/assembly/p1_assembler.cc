@@ -6,9 +6,9 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe.h>
 
+#include <hyperelastic/assembly/material_point.h>
 #include <hyperelastic/assembly/p1_assembler.h>
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/materials/tangent_projection.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <cmath>
@@ -335,11 +335,11 @@ namespace hyperelastic
         const Cell &c = cells[ci];
         if (!c.writes_rows)
           continue;
+        bool finite = false;
         try
           {
-            material.stress_and_tangent(deformation_gradient(c, U), P, A);
-            if (project_tangent)
-              project_to_positive_semidefinite(A);
+            finite = stress_and_tangent_at(
+              material, deformation_gradient(c, U), project_tangent, P, A);
           }
         catch (const std::exception &e)
           {
@@ -347,7 +347,7 @@ namespace hyperelastic
             bad_cell = c.active_index;
             break;
           }
-        if (!stress_and_tangent_finite(P, A))
+        if (!finite)
           {
             error    = non_finite_stress_message();
             bad_cell = c.active_index;
@@ -457,15 +457,11 @@ namespace hyperelastic
           round_off.add_energy(psi, F, c.volume);
         }
     report(error, bad_cell);
-    const MPI_Comm   comm = dof_handler.get_communicator();
-    EnergyEvaluation result;
-    result.min_J = Utilities::MPI::min(min_J, comm);
-    if (with_energy)
-      {
-        result.energy = Utilities::MPI::sum(energy, comm);
-        result.noise  = round_off.energy_noise(comm);
-      }
-    return result;
+    return reduce_energy_evaluation(min_J,
+                                    with_energy,
+                                    energy,
+                                    round_off.local_energy_magnitude(),
+                                    dof_handler.get_communicator());
   }
 
   template class P1Assembler<2>;

@@ -3,6 +3,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/fe_values_extractors.h>
 
+#include <hyperelastic/assembly/material_point.h>
 #include <hyperelastic/output/cell_fields.h>
 
 #include <cmath>
@@ -32,14 +33,13 @@ namespace hyperelastic
     FEValues<dim>                    values(mapping,
                          dof_handler.get_fe(),
                          quadrature,
-                         update_values | update_gradients |
-                           update_JxW_values);
+                         update_values | update_gradients | update_JxW_values);
     const FEValuesExtractors::Vector displacement(0);
     std::vector<Tensor<2, dim>>      grad_u(quadrature.size());
     // Mixed formulation: the stress is P_iso + p J F^-T and the energy
     // density psi_iso + p (J - 1) - U*(p) (= psi where p = U'(J)), from the
     // pressure unknown; the full model may have kappa = infinity.
-    const bool mixed = dof_handler.get_fe().n_components() > dim;
+    const bool mixed   = dof_handler.get_fe().n_components() > dim;
     const auto split   = mixed ? material.volumetric_split() : nullptr;
     const auto split3d = mixed ? material3d.volumetric_split() : nullptr;
     const FEValuesExtractors::Scalar pressure(dim);
@@ -57,8 +57,7 @@ namespace hyperelastic
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               const double         JxW = values.JxW(q);
-              const Tensor<2, dim> F =
-                Tensor<2, dim>(unit_symmetric_tensor<dim>()) + grad_u[q];
+              const Tensor<2, dim> F   = deformation_gradient_of(grad_u[q]);
               // Plane strain: the 3D F is diag(F, 1).
               Tensor<2, 3> F3 = unit_symmetric_tensor<3>();
               for (unsigned int i = 0; i < dim; ++i)

@@ -76,9 +76,13 @@ namespace hyperelastic
     if (dof_handler.get_fe().n_components() > dim)
       {
         field_names.emplace_back("pressure");
-        interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+        interpretation.push_back(
+          DataComponentInterpretation::component_is_scalar);
       }
-    data_out.add_data_vector(u, field_names, DataOut<dim>::type_dof_data, interpretation);
+    data_out.add_data_vector(u,
+                             field_names,
+                             DataOut<dim>::type_dof_data,
+                             interpretation);
     if (velocity)
       {
         std::vector<std::string> velocity_names(dim, "velocity");
@@ -128,61 +132,19 @@ namespace hyperelastic
 
   template <int dim>
   void
-  OutputWriter<dim>::write_summary(const StepSummary<dim> &s)
+  OutputWriter<dim>::write_summary(const std::vector<SummaryColumn> &columns)
   {
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
-    const char axes[3] = {'x', 'y', 'z'};
-    if (s.step == 1 || csv.tellp() == 0)
+    if (csv.tellp() == 0)
       {
-        csv << "step,load_factor,newton_iterations,linear_iterations,residual,"
-               "energy,min_J";
-        for (const auto &[id, force] : s.reactions)
-          for (unsigned int d = 0; d < dim; ++d)
-            csv << ",reaction_" << id << '_' << axes[d];
-        for (unsigned int d = 0; d < dim; ++d)
-          csv << ",deformed_min_" << axes[d] << ",deformed_max_" << axes[d];
-        csv << ",load_increment,cut_backs,line_search_backtracks,"
-               "inverted_cells";
-        for (unsigned int k = 0; k < s.point_displacements.size(); ++k)
-          for (unsigned int d = 0; d < dim; ++d)
-            csv << ",point" << k + 1 << "_u" << axes[d];
-        if (s.has_pressure)
-          csv << ",pressure_min,pressure_max";
-        if (s.dynamic)
-          {
-            csv << ",kinetic_energy,total_energy";
-            for (unsigned int d = 0; d < dim; ++d)
-              csv << ",momentum_" << axes[d];
-            if (dim == 3)
-              csv << ",angular_momentum_x,angular_momentum_y";
-            csv << ",angular_momentum_z";
-          }
+        for (const auto &column : columns)
+          csv << (&column == &columns.front() ? "" : ",") << column.name;
         csv << '\n';
       }
-    csv << s.step << ',' << std::setprecision(16) << s.load_factor << ','
-        << s.newton_iterations << ',' << s.linear_iterations << ','
-        << s.residual << ',' << s.energy << ',' << s.min_J;
-    for (const auto &[id, force] : s.reactions)
-      for (unsigned int d = 0; d < dim; ++d)
-        csv << ',' << force[d];
-    for (unsigned int d = 0; d < dim; ++d)
-      csv << ',' << s.deformed_min[d] << ',' << s.deformed_max[d];
-    csv << ',' << s.load_increment << ',' << s.cut_backs << ',' << s.backtracks
-        << ',' << s.inverted_cells;
-    for (const auto &displacement : s.point_displacements)
-      for (unsigned int d = 0; d < dim; ++d)
-        csv << ',' << displacement[d];
-    if (s.has_pressure)
-      csv << ',' << s.pressure_min << ',' << s.pressure_max;
-    if (s.dynamic)
-      {
-        csv << ',' << s.kinetic_energy << ',' << s.kinetic_energy + s.energy;
-        for (unsigned int d = 0; d < dim; ++d)
-          csv << ',' << s.linear_momentum[d];
-        for (unsigned int d = (dim == 3 ? 0 : 2); d < 3; ++d)
-          csv << ',' << s.angular_momentum[d];
-      }
+    csv << std::setprecision(16);
+    for (const auto &column : columns)
+      csv << (&column == &columns.front() ? "" : ",") << column.value;
     csv << std::endl;
   }
 

@@ -14,7 +14,9 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/formulation/formulation_registry.h>
 #include <hyperelastic/mesh/mesh.h>
+#include <hyperelastic/parameters.h>
 
 #include <set>
 #include <vector>
@@ -34,7 +36,8 @@ namespace hyperelastic::testing
                       const bool         with_pressure = false)
         : comm(comm)
         , tria(comm)
-        , boundary_ids(create_mesh(box(length, cells_along, cells_across), tria))
+        , boundary_ids(
+            create_mesh(box(length, cells_along, cells_across), tria))
         , fe(finite_element(degree, with_pressure))
         , mapping(dealii::FE_SimplexP<dim>(1))
         , dof_handler(tria)
@@ -50,7 +53,10 @@ namespace hyperelastic::testing
     {
       dealii::DynamicSparsityPattern dsp(relevant);
       dealii::DoFTools::make_sparsity_pattern(dof_handler, dsp);
-      dealii::SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+      dealii::SparsityTools::distribute_sparsity_pattern(dsp,
+                                                         owned,
+                                                         comm,
+                                                         relevant);
       K.reinit(owned, owned, dsp, comm);
     }
 
@@ -63,18 +69,25 @@ namespace hyperelastic::testing
     dealii::IndexSet                                       owned, relevant;
 
   private:
-    /// (P_degree)^dim, with a P1 pressure after it for the mixed formulation.
+    /// The library's element of the displacement formulation of @p degree,
+    /// or of the mixed one whose displacement has that degree (P1 or P2
+    /// displacement with a P1 pressure).
     static dealii::FESystem<dim>
     finite_element(const unsigned int degree, const bool with_pressure)
     {
-      if (with_pressure)
-        return dealii::FESystem<dim>(dealii::FE_SimplexP<dim>(degree), dim,
-                                     dealii::FE_SimplexP<dim>(1), 1);
-      return dealii::FESystem<dim>(dealii::FE_SimplexP<dim>(degree), dim);
+      Parameters parameters;
+      parameters.problem.dimension   = dim;
+      parameters.problem.fe_degree   = degree;
+      parameters.problem.formulation = with_pressure ? "mixed" : "displacement";
+      parameters.problem.mixed_element =
+        degree == 2 ? MixedElement::taylor_hood : MixedElement::mini;
+      return create_formulation<dim>(parameters)->finite_element();
     }
 
     static MeshParameters
-    box(const double length, const unsigned int cells_along, const unsigned int cells_across)
+    box(const double       length,
+        const unsigned int cells_along,
+        const unsigned int cells_across)
     {
       MeshParameters mesh;
       mesh.lower_corner    = std::vector<double>(dim, 0.);

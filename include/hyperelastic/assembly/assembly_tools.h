@@ -1,15 +1,13 @@
-// Pieces every assembly loop shares: the vector and matrix types, the
-// round-off estimates of forces and energies, the finiteness check of a
-// stress and tangent, and the collective report of a failure on one cell.
+// Pieces every assembly loop shares: the round-off estimates of forces and
+// energies, the collective totals of an energy pass, the finiteness check of
+// a stress and tangent, and the text of a failure on one cell. The vector
+// and matrix types are in base/linear_algebra.h.
 #pragma once
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 
+#include <hyperelastic/base/linear_algebra.h>
 #include <hyperelastic/materials/material.h>
 
 #include <cmath>
@@ -21,9 +19,6 @@
 
 namespace hyperelastic
 {
-  using VectorType = dealii::TrilinosWrappers::MPI::Vector;
-  using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
-
   /// The total potential energy of a state and its smallest J.
   struct EnergyEvaluation
   {
@@ -94,12 +89,12 @@ namespace hyperelastic
              std::sqrt(dealii::Utilities::MPI::sum(force_squared, comm));
     }
 
-    /// Round-off of the assembled energy (collective).
+    /// This rank's sum of the magnitudes behind the energy (summed over
+    /// the ranks by reduce_energy_evaluation).
     double
-    energy_noise(const MPI_Comm comm) const
+    local_energy_magnitude() const
     {
-      constexpr double round_off = 1e-13;
-      return round_off * dealii::Utilities::MPI::sum(energy_magnitude, comm);
+      return energy_magnitude;
     }
 
   private:
@@ -108,6 +103,28 @@ namespace hyperelastic
     double force_squared    = 0.;
     double energy_magnitude = 0.;
   };
+
+  /// The totals of a rank's energy pass over all ranks (collective): the
+  /// smallest J and, if @p with_energy, the energy with its round-off level
+  /// 1e-13 times the summed magnitudes of its terms (@p magnitude: this
+  /// rank's sum).
+  inline EnergyEvaluation
+  reduce_energy_evaluation(const double   min_J,
+                           const bool     with_energy,
+                           const double   energy,
+                           const double   magnitude,
+                           const MPI_Comm comm)
+  {
+    constexpr double round_off = 1e-13;
+    EnergyEvaluation result;
+    result.min_J = dealii::Utilities::MPI::min(min_J, comm);
+    if (with_energy)
+      {
+        result.energy = dealii::Utilities::MPI::sum(energy, comm);
+        result.noise = round_off * dealii::Utilities::MPI::sum(magnitude, comm);
+      }
+    return result;
+  }
 
   /// False if any entry of @p P or @p A is not finite (checked before
   /// anything is written: Trilinos would carry NaN into the solver).
@@ -149,73 +166,4 @@ namespace hyperelastic
     return s.str();
   }
 
-  /// Condenses one matrix row with Dirichlet @p constraints: removes from
-  /// @p columns and @p values the constrained columns and returns the sum of
-  /// their values times the prescribed values (what moves to the right-hand
-  /// side, with a minus sign). Throws for constraints with entries.
-  inline double
-  condense_row(const dealii::AffineConstraints<double>      &constraints,
-               std::vector<dealii::types::global_dof_index> &columns,
-               std::vector<double>                          &values)
-  {
-    double       moved = 0.;
-    unsigned int kept  = 0;
-    for (unsigned int j = 0; j < columns.size(); ++j)
-      {
-        if (!constraints.is_constrained(columns[j]))
-          {
-            columns[kept]  = columns[j];
-            values[kept++] = values[j];
-            continue;
-          }
-        const auto *entries = constraints.get_constraint_entries(columns[j]);
-        if (entries != nullptr && !entries->empty())
-          throw std::logic_error(
-            "condense_row: only Dirichlet constraints are supported");
-        moved += values[j] * constraints.get_inhomogeneity(columns[j]);
-      }
-    columns.resize(kept);
-    values.resize(kept);
-    return moved;
-  }
-
-  /// Adds @p cell_matrix (rows and columns @p dofs) to the rows of @p matrix
-  /// whose dofs are not constrained, moving the columns of Dirichlet-
-  /// constrained dofs to @p rhs with their prescribed values, as
-  /// AffineConstraints::distribute_local_to_global would, except that
-  /// constrained rows are left alone (they already read d du_r = d g_r).
-  /// The caller compresses both.
-  inline void
-  add_condensed(const dealii::FullMatrix<double>                   &cell_matrix,
-                const std::vector<dealii::types::global_dof_index> &dofs,
-                const dealii::AffineConstraints<double>            &constraints,
-                MatrixType                                         &matrix,
-                VectorType                                         &rhs)
-  {
-    std::vector<dealii::types::global_dof_index> columns;
-    std::vector<double>                          values;
-    for (unsigned int i = 0; i < dofs.size(); ++i)
-      {
-        if (constraints.is_constrained(dofs[i]))
-          continue;
-        columns = dofs;
-        values.assign(&cell_matrix(i, 0), &cell_matrix(i, 0) + dofs.size());
-        const double moved = condense_row(constraints, columns, values);
-        matrix.add(dofs[i], columns.size(), columns.data(), values.data());
-        if (moved != 0.)
-          rhs.add(std::vector<dealii::types::global_dof_index>{dofs[i]},
-                  std::vector<double>{-moved});
-      }
-  }
-
-  /// u . v over the owned entries (u with ghost entries, v without; not
-  /// summed over ranks).
-  inline double
-  local_owned_dot(const VectorType &u_ghosted, const VectorType &v)
-  {
-    double sum = 0.;
-    for (const auto i : v.locally_owned_elements())
-      sum += u_ghosted(i) * v(i);
-    return sum;
-  }
 } // namespace hyperelastic

@@ -28,23 +28,13 @@
 #include <deal.II/fe/mapping.h>
 
 #include <hyperelastic/assembly/assembler.h>
+#include <hyperelastic/assembly/mixed_element.h>
 #include <hyperelastic/materials/volumetric_split.h>
 
 #include <memory>
 
 namespace hyperelastic
 {
-  enum class MixedElement
-  {
-    mini,        ///< P1-bubble/P1, bubble condensed per cell
-    stabilized,  ///< P1/P1 with pressure-projection stabilisation
-    taylor_hood, ///< P2/P1
-  };
-
-  /// The displacement degree of @p element (2 for Taylor-Hood, else 1).
-  unsigned int
-  displacement_degree(MixedElement element);
-
   template <int dim>
   class MixedAssembler : public Assembler<dim>
   {
@@ -98,7 +88,9 @@ namespace hyperelastic
 
     /// The cell's residual (and matrix) at its current values and bubble.
     void
-    evaluate_cell(CellData &data, CellOutput output, bool project_tangent) const;
+    evaluate_cell(CellData  &data,
+                  CellOutput output,
+                  bool       project_tangent) const;
 
     enum class BubbleOutcome
     {

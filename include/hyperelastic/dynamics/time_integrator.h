@@ -15,7 +15,7 @@
 // stiffness damping b K0 v(u) is a term of its own (stiffness_damping.h).
 #pragma once
 
-#include <hyperelastic/assembly/assembly_tools.h>
+#include <hyperelastic/base/linear_algebra.h>
 #include <hyperelastic/dynamics/time_integration_parameters.h>
 
 namespace hyperelastic

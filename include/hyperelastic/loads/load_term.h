@@ -10,8 +10,8 @@
 
 #include <deal.II/lac/affine_constraints.h>
 
-#include <hyperelastic/assembly/assembly_tools.h>
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/base/linear_algebra.h>
 
 #include <string>
 

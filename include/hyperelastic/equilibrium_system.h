@@ -1,0 +1,176 @@
+// The discrete equations of a scene as the Newton solver and the load stepper
+// see them (a SteppedSystem): the iterate u and the line search's trial
+// points, the Dirichlet constraints of the current linearization, the tangent
+// and its solve, Newton's force and displacement scales, the converged
+// states to return to after a failed step, and the verdict on inverted cells
+// at a converged state. What a step solves (its load factor, inertia,
+// predictor) comes from the time-stepping driver; Problem builds all parts
+// and reads the converged state for the summary and the output.
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/dynamics/time_stepping.h>
+#include <hyperelastic/formulation/formulation.h>
+#include <hyperelastic/loads/boundary_conditions.h>
+#include <hyperelastic/materials/material.h>
+#include <hyperelastic/parameters.h>
+#include <hyperelastic/solvers/linear_solver.h>
+#include <hyperelastic/solvers/load_stepping.h>
+
+namespace hyperelastic
+{
+  template <int dim>
+  class EquilibriumSystem : public SteppedSystem
+  {
+  public:
+    /// The parts the system works on, owned by Problem (they outlive it).
+    struct Parts
+    {
+      const Parameters              &parameters;
+      const dealii::DoFHandler<dim> &dof_handler;
+      const dealii::Mapping<dim>    &mapping;
+      const Material<dim>           &material;
+      const BoundaryConditions<dim> &boundary_conditions;
+      const Formulation<dim>        &formulation;
+      LinearSolver                  &linear_solver;
+      dealii::TimerOutput           &timer;
+      dealii::ConditionalOStream     pcout;
+    };
+
+    /// The constraints, the tangent's sparsity and the vectors (u = 0).
+    /// Collective.
+    explicit EquilibriumSystem(const Parts &parts);
+
+    /// Completes the system with the operator and the driver, which must
+    /// outlive it.
+    void
+    attach(const ElasticityOperator<dim> &elasticity,
+           TimeStepping<dim>             &stepping);
+
+    /// The homogeneous Dirichlet constraints (the free dofs).
+    const dealii::AffineConstraints<double> &
+    free_dofs() const
+    {
+      return homogeneous_constraints;
+    }
+
+    /// The last evaluated state (after convergence: the converged one),
+    /// with ghost entries.
+    const VectorType &
+    solution() const
+    {
+      return u_ghosted;
+    }
+
+    /// f_int - f_ext at the last residual evaluation (owned entries): at a
+    /// converged state, the support forces on the Dirichlet dofs.
+    const VectorType &
+    residual_forces() const
+    {
+      return residual;
+    }
+
+    /// The tangent matrix of the last linearization.
+    const MatrixType &
+    tangent_matrix() const
+    {
+      return tangent;
+    }
+
+    /// The load factor (or time) of the current state.
+    double
+    load_factor() const
+    {
+      return current_load_factor;
+    }
+
+    /// Smallest J at the last converged state, and the number of cells with
+    /// J <= 0 there (non-zero only when such states are accepted).
+    double
+    converged_min_J() const
+    {
+      return min_J;
+    }
+    dealii::types::global_cell_index
+    converged_inverted_cells() const
+    {
+      return inverted_cells;
+    }
+
+    // NonlinearSystem
+    bool
+    assemble_linearization(bool impose_constraint_increment,
+                           bool positive_semidefinite) override;
+    unsigned int
+    solve_linearization(double forcing) override;
+    bool
+    is_linear() const override;
+    bool
+    has_potential() const override;
+    std::string
+    why_no_potential() const override;
+    double
+    directional_derivative() const override;
+    TrialPoint
+    evaluate_trial(double alpha, TrialCheck check) override;
+    double
+    accept_trial() override;
+    ResidualNorms
+    residual_norms() override;
+    double
+    solution_scale() const override;
+    void
+    verify_converged_state() override;
+
+    // SteppedSystem
+    void
+    set_load_factor(double t) override;
+    void
+    store_converged_state() override;
+    void
+    restore_converged_state() override;
+
+  private:
+    /// Assembles the forces at u_ghosted into internal_force, external_force
+    /// and residual; returns the residual norm on the free unknowns and its
+    /// round-off level in @p noise.
+    double
+    free_residual_norm(double &noise);
+
+    const Parts                    parts;
+    const MPI_Comm                 comm;
+    dealii::IndexSet               owned_dofs, relevant_dofs;
+    const ElasticityOperator<dim> *elasticity = nullptr;
+    TimeStepping<dim>             *stepping   = nullptr;
+
+    /// Dirichlet constraints: with the increment to the prescribed values
+    /// (first iteration of a load step) and homogeneous (later iterations);
+    /// active_constraints points at the ones of the current linearization.
+    dealii::AffineConstraints<double>        increment_constraints;
+    dealii::AffineConstraints<double>        homogeneous_constraints;
+    const dealii::AffineConstraints<double> *active_constraints = nullptr;
+
+    MatrixType tangent;
+    /// u: the current iterate; update: Newton's direction; trial: the
+    /// line search's candidate u + alpha update; u_ghosted: whichever of u
+    /// and trial was evaluated last, with ghost entries.
+    VectorType u, u_ghosted, update, trial, rhs;
+    VectorType internal_force, external_force, residual;
+    double     current_load_factor = 0.;
+    double     step_length         = 1.; ///< of the last evaluated trial
+    /// Running maxima of the force and displacement norms (Newton's scales).
+    double                           force_scale    = 0.;
+    double                           solution_size  = 0.;
+    double                           min_J          = 1.;
+    dealii::types::global_cell_index inverted_cells = 0;
+
+    /// The last converged state and the one before it.
+    ConvergedState converged, previous;
+  };
+} // namespace hyperelastic

@@ -1,0 +1,161 @@
+// The implicit-dynamics driver: inertia and damping terms, the scheme's
+// target per step, the end-of-step velocity and acceleration, the motion's
+// measures.
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <hyperelastic/dynamics/implicit_dynamics.h>
+#include <hyperelastic/loads/boundary_conditions.h>
+
+namespace hyperelastic
+{
+  template <int dim>
+  ImplicitDynamics<dim>::ImplicitDynamics(const SteppingContext<dim> &context)
+      : context(context)
+      , parameters(context.parameters.time_integration)
+  {
+  }
+
+  template <int dim>
+  LoadStepper
+  ImplicitDynamics<dim>::stepper(dealii::ConditionalOStream pcout) const
+  {
+    return LoadStepper(context.parameters.load_stepping,
+                       parameters.end_time,
+                       parameters.time_step,
+                       pcout);
+  }
+
+  template <int dim>
+  void
+  ImplicitDynamics<dim>::initialize(const VectorType &u)
+  {
+    const auto &dof_handler = context.dof_handler;
+    auto        term        = std::make_unique<InertiaTerm<dim>>(dof_handler,
+                                                   parameters.density,
+                                                   parameters.lumped_mass);
+    inertia                 = term.get();
+    context.elasticity.add_term(std::move(term));
+    if (parameters.stiffness_damping > 0.)
+      {
+        auto damping = std::make_unique<StiffnessDampingTerm<dim>>(
+          dof_handler, context.mapping, context.material.small_strain_moduli());
+        stiffness_damping = damping.get();
+        context.elasticity.add_term(std::move(damping));
+      }
+    integrator = std::make_unique<TimeIntegrator>(parameters.scheme,
+                                                  parameters.mass_damping);
+    motion =
+      std::make_unique<Motion<dim>>(dof_handler, context.mapping, *inertia);
+    const dealii::IndexSet &owned = dof_handler.locally_owned_dofs();
+    const MPI_Comm          comm  = dof_handler.get_communicator();
+    for (VectorType *v :
+         {&velocity, &acceleration, &new_velocity, &new_acceleration, &scratch})
+      v->reinit(owned, comm);
+    if (!parameters.initial_velocity.empty())
+      {
+        const auto v0 =
+          parse_vector_function<dim>(parameters.initial_velocity,
+                                     context.parameters.loading.constants,
+                                     "Time integration/Initial velocity");
+        v0->set_time(0.);
+        dealii::VectorTools::interpolate(context.mapping,
+                                         dof_handler,
+                                         *v0,
+                                         velocity);
+      }
+    dealii::IndexSet relevant;
+    dealii::DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    velocity_ghosted.reinit(owned, relevant, comm);
+    velocity_ghosted = velocity;
+    if (parameters.scheme == TimeScheme::newmark)
+      {
+        // M a_0 = f_ext(0) - f_int(u_0) on the free dofs (the inertia term's
+        // scale is still 0); supported dofs start at rest.
+        VectorType internal(owned, comm);
+        context.elasticity.assemble_forces(u, 0., internal, scratch);
+        scratch -= internal;
+        inertia->solve_mass(scratch,
+                            context.homogeneous_constraints,
+                            acceleration);
+      }
+  }
+
+  template <int dim>
+  double
+  ImplicitDynamics<dim>::begin_step(const double          t,
+                                    const ConvergedState &converged,
+                                    const ConvergedState &,
+                                    VectorType &,
+                                    VectorType &)
+  {
+    // The step starts from the last converged state (u = u_n).
+    step_end_time  = t;
+    const double h = t - converged.load_factor;
+    double       c = 0.;
+    integrator->step_target(h, converged.u, velocity, acceleration, c, scratch);
+    inertia->set_step(c, scratch);
+    if (stiffness_damping)
+      {
+        double kappa = 0.;
+        integrator->velocity_map(h, converged.u, velocity, kappa, scratch);
+        stiffness_damping->set_step(parameters.stiffness_damping * kappa,
+                                    scratch);
+      }
+    return integrator->evaluation_time(converged.load_factor, t);
+  }
+
+  template <int dim>
+  double
+  ImplicitDynamics<dim>::accept_step(const double          solved,
+                                     const ConvergedState &converged,
+                                     VectorType           &u,
+                                     VectorType           &u_ghosted)
+  {
+    if (!converged.valid)
+      return solved;
+    // The step from converged (t_n, u_n) to its end (implicit midpoint: from
+    // the solved midpoint state): new u, v and a.
+    integrator->end_state(converged.u, u);
+    u_ghosted = u;
+    integrator->finish_step(step_end_time - converged.load_factor,
+                            converged.u,
+                            velocity,
+                            acceleration,
+                            u,
+                            new_velocity,
+                            new_acceleration);
+    velocity.swap(new_velocity);
+    acceleration.swap(new_acceleration);
+    velocity_ghosted = velocity;
+    return step_end_time;
+  }
+
+  template <int dim>
+  void
+  ImplicitDynamics<dim>::summarize(const VectorType &u_ghosted,
+                                   StepSummary<dim> &s) const
+  {
+    // Potential energy without the step's inertia and damping terms; kinetic
+    // energy and momenta of the converged motion.
+    s.energy -= inertia->potential(u_ghosted, s.load_factor);
+    if (stiffness_damping)
+      s.energy -= stiffness_damping->potential(u_ghosted, s.load_factor);
+    const MotionMeasures m = motion->measure(u_ghosted, velocity_ghosted);
+    s.dynamic              = true;
+    s.kinetic_energy       = m.kinetic_energy;
+    s.linear_momentum      = m.linear_momentum;
+    s.angular_momentum     = m.angular_momentum;
+  }
+
+  template <int dim>
+  bool
+  ImplicitDynamics<dim>::writes_fields(const unsigned int step,
+                                       const double       t) const
+  {
+    return step % parameters.output_every == 0 || t >= parameters.end_time;
+  }
+
+  template class ImplicitDynamics<2>;
+  template class ImplicitDynamics<3>;
+} // namespace hyperelastic

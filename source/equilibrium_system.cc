@@ -1,0 +1,300 @@
+// The discrete equations of a scene as Newton and the load stepper see them.
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/output/inverted_cells.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hyperelastic
+{
+  using namespace dealii;
+
+  template <int dim>
+  EquilibriumSystem<dim>::EquilibriumSystem(const Parts &parts)
+      : parts(parts)
+      , comm(parts.dof_handler.get_communicator())
+      , owned_dofs(parts.dof_handler.locally_owned_dofs())
+  {
+    DoFTools::extract_locally_relevant_dofs(parts.dof_handler, relevant_dofs);
+    parts.boundary_conditions.make_constraints(parts.mapping,
+                                               parts.dof_handler,
+                                               relevant_dofs,
+                                               0.,
+                                               u_ghosted,
+                                               true,
+                                               homogeneous_constraints);
+
+    // All couplings, constrained dofs included: the P1 kernel relies on
+    // every node pair having a full dim x dim block in the matrix.
+    DynamicSparsityPattern dsp(relevant_dofs);
+    DoFTools::make_sparsity_pattern(parts.dof_handler, dsp);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               owned_dofs,
+                                               comm,
+                                               relevant_dofs);
+    tangent.reinit(owned_dofs, owned_dofs, dsp, comm);
+
+    for (VectorType *v : {&u,
+                          &update,
+                          &trial,
+                          &rhs,
+                          &internal_force,
+                          &external_force,
+                          &residual,
+                          &converged.u,
+                          &previous.u})
+      v->reinit(owned_dofs, comm);
+    u_ghosted.reinit(owned_dofs, relevant_dofs, comm);
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::attach(const ElasticityOperator<dim> &elasticity,
+                                 TimeStepping<dim>             &stepping)
+  {
+    this->elasticity = &elasticity;
+    this->stepping   = &stepping;
+  }
+
+  // ------------------------------------------------------ NonlinearSystem
+  template <int dim>
+  bool
+  EquilibriumSystem<dim>::assemble_linearization(
+    const bool impose_constraint_increment,
+    const bool positive_semidefinite)
+  {
+    bool moves_constraints = false;
+    if (impose_constraint_increment)
+      {
+        TimerOutput::Scope scope(parts.timer, "Dirichlet values");
+        // Prescribed minus current values: after a shortened step the next
+        // linearization carries what is still missing.
+        parts.boundary_conditions.make_constraints(parts.mapping,
+                                                   parts.dof_handler,
+                                                   relevant_dofs,
+                                                   current_load_factor,
+                                                   u_ghosted,
+                                                   false,
+                                                   increment_constraints);
+        double largest = 0.;
+        for (const auto &line : increment_constraints.get_lines())
+          largest = std::max(largest, std::abs(line.inhomogeneity));
+        moves_constraints = Utilities::MPI::max(largest, comm) > 0.;
+      }
+    TimerOutput::Scope scope(parts.timer, "assembly");
+    // The update of this linearization must satisfy these constraints.
+    active_constraints =
+      moves_constraints ? &increment_constraints : &homogeneous_constraints;
+    elasticity->assemble_system(u_ghosted,
+                                current_load_factor,
+                                *active_constraints,
+                                tangent,
+                                rhs,
+                                positive_semidefinite);
+    return moves_constraints;
+  }
+
+  template <int dim>
+  unsigned int
+  EquilibriumSystem<dim>::solve_linearization(const double forcing)
+  {
+    {
+      TimerOutput::Scope scope(parts.timer, "preconditioner setup");
+      parts.linear_solver.prepare(tangent);
+    }
+    TimerOutput::Scope scope(parts.timer, "linear solve");
+    double             tolerance =
+      std::max(forcing, parts.parameters.linear_solver.relative_tolerance);
+    // A linear problem takes this one solve, and no Newton iteration
+    // follows to correct it: it also meets Newton's relative residual
+    // tolerance where that is the tighter one.
+    if (is_linear() && forcing == 0.)
+      tolerance = std::min(tolerance,
+                           parts.parameters.newton.relative_residual_tolerance);
+    update = 0.;
+    const unsigned int iterations =
+      parts.linear_solver.solve(tangent, update, rhs, tolerance);
+    active_constraints->distribute(update);
+    return iterations;
+  }
+
+  template <int dim>
+  bool
+  EquilibriumSystem<dim>::is_linear() const
+  {
+    // 'Linearize once per step' treats each time step as linear: one full
+    // step is accepted.
+    return parts.material.is_linear() || stepping->linear_steps();
+  }
+
+  template <int dim>
+  bool
+  EquilibriumSystem<dim>::has_potential() const
+  {
+    // Without one (a saddle point, forces without an energy, a load without
+    // a potential) the line search tests the residual norm.
+    return elasticity->is_conservative() && parts.formulation.has_potential();
+  }
+
+  template <int dim>
+  std::string
+  EquilibriumSystem<dim>::why_no_potential() const
+  {
+    if (!parts.formulation.has_potential())
+      return parts.formulation.why_no_potential();
+    return "a load has no potential";
+  }
+
+  template <int dim>
+  double
+  EquilibriumSystem<dim>::directional_derivative() const
+  {
+    // rhs = -(f_int - f_ext) on the free rows (zero on constrained rows,
+    // where the update is zero too).
+    return -(rhs * update);
+  }
+
+  template <int dim>
+  TrialPoint
+  EquilibriumSystem<dim>::evaluate_trial(const double     alpha,
+                                         const TrialCheck check)
+  {
+    TimerOutput::Scope scope(parts.timer, "line search");
+    trial = u;
+    trial.add(alpha, update);
+    u_ghosted   = trial;
+    step_length = alpha;
+
+    TrialPoint point;
+    if (check == TrialCheck::none)
+      return point;
+    if (check == TrialCheck::residual)
+      {
+        point.residual = free_residual_norm(point.residual_noise);
+        point.min_J =
+          elasticity->evaluate(u_ghosted, current_load_factor, false).min_J;
+        point.admissible = (parts.material.defined_for_inverted_elements() ||
+                            point.min_J > 0.) &&
+                           std::isfinite(point.residual);
+        return point;
+      }
+    const EnergyEvaluation e =
+      elasticity->evaluate(u_ghosted,
+                           current_load_factor,
+                           check == TrialCheck::energy);
+    point.min_J = e.min_J;
+    if (check == TrialCheck::energy)
+      {
+        point.energy       = e.energy;
+        point.energy_noise = e.noise;
+      }
+    point.admissible =
+      (parts.material.defined_for_inverted_elements() || e.min_J > 0.) &&
+      (check != TrialCheck::energy || std::isfinite(e.energy));
+    return point;
+  }
+
+  template <int dim>
+  double
+  EquilibriumSystem<dim>::accept_trial()
+  {
+    u             = trial;
+    solution_size = std::max(solution_size, u.l2_norm());
+    return step_length * update.l2_norm();
+  }
+
+  template <int dim>
+  ResidualNorms
+  EquilibriumSystem<dim>::residual_norms()
+  {
+    TimerOutput::Scope scope(parts.timer, "residual");
+    double             noise;
+    const double       norm = free_residual_norm(noise);
+    force_scale             = std::max(
+      {force_scale, internal_force.l2_norm(), external_force.l2_norm()});
+    return {norm, force_scale, noise};
+  }
+
+  template <int dim>
+  double
+  EquilibriumSystem<dim>::free_residual_norm(double &noise)
+  {
+    noise    = elasticity->assemble_forces(u_ghosted,
+                                        current_load_factor,
+                                        internal_force,
+                                        external_force);
+    residual = internal_force;
+    residual -= external_force;
+    VectorType free_residual = residual;
+    homogeneous_constraints.set_zero(free_residual);
+    return free_residual.l2_norm();
+  }
+
+  template <int dim>
+  double
+  EquilibriumSystem<dim>::solution_scale() const
+  {
+    return solution_size;
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::verify_converged_state()
+  {
+    // Accepted with a warning, or rejected, by the scene's policy.
+    const InvertedCells<dim> inverted =
+      find_inverted_cells(parts.mapping, parts.dof_handler, u_ghosted);
+    min_J          = inverted.min_J;
+    inverted_cells = inverted.n_cells;
+    judge_inverted_cells(inverted,
+                         parts.parameters.newton,
+                         parts.parameters.material.model,
+                         parts.material.defined_for_inverted_elements(),
+                         parts.pcout);
+  }
+
+  // ------------------------------------------------------- SteppedSystem
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::set_load_factor(const double t)
+  {
+    current_load_factor =
+      stepping->begin_step(t, converged, previous, u, u_ghosted);
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::store_converged_state()
+  {
+    current_load_factor =
+      stepping->accept_step(current_load_factor, converged, u, u_ghosted);
+    // The last converged state becomes the one before (the vectors swap;
+    // no copy), then the current one is stored.
+    std::swap(previous, converged);
+    converged.valid         = true;
+    converged.load_factor   = current_load_factor;
+    converged.u             = u;
+    converged.force_scale   = force_scale;
+    converged.solution_size = solution_size;
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::restore_converged_state()
+  {
+    // The scales too: a diverging attempt must not loosen the tests of the
+    // next one.
+    u             = converged.u;
+    u_ghosted     = u;
+    force_scale   = converged.force_scale;
+    solution_size = converged.solution_size;
+  }
+
+  template class EquilibriumSystem<2>;
+  template class EquilibriumSystem<3>;
+} // namespace hyperelastic

@@ -1,0 +1,85 @@
+// The displacement formulation: the element, the locking warning, the check
+// that an exactly incompressible material is not asked of it.
+#include <deal.II/fe/fe_simplex_p.h>
+
+#include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/formulation/displacement_formulation.h>
+#include <hyperelastic/formulation/formulation_registry.h>
+
+#include <sstream>
+
+namespace hyperelastic
+{
+  template <int dim>
+  DisplacementFormulation<dim>::DisplacementFormulation(
+    const Parameters &parameters)
+      : degree(parameters.problem.fe_degree)
+  {
+  }
+
+  template <int dim>
+  dealii::FESystem<dim>
+  DisplacementFormulation<dim>::finite_element() const
+  {
+    return dealii::FESystem<dim>(dealii::FE_SimplexP<dim>(degree), dim);
+  }
+
+  template <int dim>
+  std::string
+  DisplacementFormulation<dim>::element_description() const
+  {
+    return "P" + std::to_string(degree) + " simplices";
+  }
+
+  template <int dim>
+  std::string
+  DisplacementFormulation<dim>::warning(const Material<dim> &material) const
+  {
+    // Linear simplices have too few displacement modes to deform at nearly
+    // constant volume: when lambda >> mu they lock (far too stiff in
+    // bending and shear). Warn; it is not an error.
+    const double nu = material.small_strain_moduli().poisson_ratio();
+    if (degree != 1 || !(nu > 0.45))
+      return {};
+    std::ostringstream text;
+    text << "warning: Poisson's ratio " << nu
+         << " > 0.45 with P1 elements: expect volumetric locking (too "
+            "stiff in bending and shear). Use 'Problem/Formulation = "
+            "mixed' (with decoupled neo-Hookean or Mooney-Rivlin), "
+            "'Problem/Finite element degree = 2' or a finer mesh, and "
+            "check the answer does not change.";
+    return text.str();
+  }
+
+  template <int dim>
+  void
+  DisplacementFormulation<dim>::check(Parameters &parameters)
+  {
+    // Exact incompressibility needs the pressure as an unknown.
+    const MaterialParameters &material = parameters.material;
+    if (!material.incompressible_entry.empty())
+      reject(material.incompressible_entry,
+             material.incompressible_value,
+             std::string(material.incompressible_entry ==
+                             "Material/Poisson's ratio"
+                           ? "must lie strictly between -1 and 0.5 with the "
+                             "displacement formulation; "
+                           : "is exactly incompressible; ") +
+               "an exactly incompressible material (nu = 0.5, bulk modulus "
+               "'inf') needs 'Problem/Formulation = mixed' (and a model with "
+               "a volumetric split)");
+  }
+
+  FormulationKind
+  displacement_formulation_kind()
+  {
+    return FormulationKind::of<DisplacementFormulation>(
+      "displacement",
+      "the displacement is the only unknown (the default); P1 or P2 after "
+      "'Finite element degree'.",
+      &DisplacementFormulation<3>::check);
+  }
+
+  template class DisplacementFormulation<2>;
+  template class DisplacementFormulation<3>;
+} // namespace hyperelastic

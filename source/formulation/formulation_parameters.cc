@@ -1,0 +1,70 @@
+// The scene's Problem subsection: declaration, documentation and validation
+// of its entries.
+#include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/formulation/formulation_parameters.h>
+#include <hyperelastic/formulation/formulation_registry.h>
+
+namespace hyperelastic
+{
+  using namespace entry_patterns;
+
+  void
+  ProblemParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Problem");
+    prm.declare_entry("Dimension",
+                      "3",
+                      Integer(2, 3),
+                      "Space dimension: 2 (plane strain, triangles) or 3 "
+                      "(tetrahedra).");
+    prm.declare_entry("Finite element degree",
+                      "1",
+                      Integer(1, 2),
+                      "Polynomial degree of the simplex Lagrange element: 1 "
+                      "(P1, linear) or 2 (P2, quadratic).");
+    prm.declare_entry(
+      "Assembly",
+      "automatic",
+      Selection("automatic|generic"),
+      "'automatic': P1 forces, tangent and energy from the precomputed P1 "
+      "kernel (hat-function gradients and volumes stored per cell, values "
+      "written straight into the matrix rows), P2 from FEValues. 'generic': "
+      "FEValues for every degree (several times slower for P1; the reference "
+      "the kernel is tested against).");
+    std::string documentation =
+      "How the unknowns and the material part are formulated:";
+    for (const FormulationKind &kind : formulation_kinds())
+      documentation += "\n'" + kind.name + "': " + kind.documentation;
+    prm.declare_entry("Formulation",
+                      "displacement",
+                      Selection(formulation_names()),
+                      documentation);
+    prm.declare_entry(
+      "Mixed element",
+      "P1-bubble/P1",
+      Selection("P1-bubble/P1|P1/P1 stabilized|P2/P1"),
+      "The displacement/pressure pair of 'Formulation = mixed': "
+      "'P1-bubble/P1' (MINI: P1 plus a cell bubble, condensed on the cell, "
+      "so the system holds P1 unknowns only), 'P1/P1 stabilized' (equal "
+      "order with Dohrmann-Bochev pressure-projection stabilisation "
+      "-1/mu int (p - Pi0 p)(q - Pi0 q)), 'P2/P1' (Taylor-Hood). All are "
+      "inf-sup stable in 2D and 3D.");
+    prm.leave_subsection();
+  }
+
+  void
+  ProblemParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Problem");
+    dimension                 = prm.get_integer("Dimension");
+    fe_degree                 = prm.get_integer("Finite element degree");
+    fast_p1_assembly          = prm.get("Assembly") == "automatic";
+    formulation               = prm.get("Formulation");
+    const std::string element = prm.get("Mixed element");
+    mixed_element             = element == "P2/P1" ? MixedElement::taylor_hood
+                                : element == "P1/P1 stabilized" ? MixedElement::stabilized
+                                                                : MixedElement::mini;
+    prm.leave_subsection();
+  }
+
+} // namespace hyperelastic
