@@ -160,6 +160,13 @@ namespace hyperelastic
   }
 
   template <int dim>
+  double
+  EquilibriumSystem<dim>::largest_feasible_step()
+  {
+    return elasticity->largest_feasible_step(u, update, current_load_factor);
+  }
+
+  template <int dim>
   TrialPoint
   EquilibriumSystem<dim>::evaluate_trial(const double     alpha,
                                          const TrialCheck check)

@@ -32,6 +32,7 @@ namespace hyperelastic
     LinearSolverParameters::declare(prm);
     OutputParameters::declare(prm);
     TimeIntegrationParameters::declare(prm);
+    ContactParameters::declare(prm);
   }
 
   void
@@ -46,9 +47,19 @@ namespace hyperelastic
     linear_solver.parse(prm);
     output.parse(prm);
     time_integration.parse(prm);
+    contact.parse(prm);
 
     // Checks that need the dimension.
     const unsigned int dim = problem.dimension;
+    contact.check(dim);
+    if (contact.active() &&
+        time_integration.scheme == TimeScheme::midpoint)
+      reject("Time integration/Scheme",
+             "implicit midpoint",
+             "contact (Contact/Obstacle ...) needs a scheme whose solved "
+             "state is the end of the step, 'backward Euler' or 'Newmark': "
+             "implicit midpoint's end state is extrapolated and could cross "
+             "an obstacle");
     const auto size = [](const auto &v) { return std::to_string(v.size()); };
     if (mesh.source == MeshSource::box)
       {

@@ -86,6 +86,17 @@ namespace hyperelastic
       *boundary_conditions,
       parameters.problem.fast_p1_assembly,
       formulation->material_part(dof_handler, mapping, *material));
+    if (parameters.contact.active())
+      {
+        auto term = std::make_unique<ObstacleContact<dim>>(
+          parameters.contact,
+          parameters.loading.constants,
+          dof_handler,
+          mapping,
+          material->small_strain_moduli());
+        contact = term.get();
+        elasticity->add_term(std::move(term));
+      }
     stepping = create_time_stepping<dim>({parameters,
                                           dof_handler,
                                           mapping,
@@ -137,6 +148,12 @@ namespace hyperelastic
                                                  : " (follower)");
         pcout << std::endl;
       }
+    if (contact)
+      pcout << "contact: " << parameters.contact.obstacles.size()
+            << " obstacle(s), barrier distance d_hat = "
+            << contact->barrier_distance()
+            << ", barrier stiffness kappa = " << contact->barrier_stiffness()
+            << std::endl;
     const std::string warning = formulation->warning(*material);
     if (!warning.empty())
       pcout << warning << std::endl;
@@ -163,6 +180,8 @@ namespace hyperelastic
     s.min_J          = system->converged_min_J();
     s.inverted_cells = system->converged_inverted_cells();
     postprocessor->measure(system->solution(), system->residual_forces(), s);
+    if (contact)
+      contact->summarize(system->solution(), s.load_factor, s);
 
     scope.stop();
     if (parameters.output.write_vtu &&

@@ -117,6 +117,8 @@ namespace hyperelastic
     why_no_potential() const override;
     double
     directional_derivative() const override;
+    double
+    largest_feasible_step() override;
     TrialPoint
     evaluate_trial(double alpha, TrialCheck check) override;
     double

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/dynamics/time_integration_parameters.h>
 #include <hyperelastic/formulation/formulation_parameters.h>
 #include <hyperelastic/loads/loading_parameters.h>
@@ -30,6 +31,7 @@ namespace hyperelastic
     NewtonParameters          newton;
     LoadSteppingParameters    load_stepping;
     TimeIntegrationParameters time_integration;
+    ContactParameters         contact;
     LinearSolverParameters    linear_solver;
     OutputParameters          output;
 

@@ -15,6 +15,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/contact/obstacle_contact.h>
 #include <hyperelastic/dynamics/time_stepping.h>
 #include <hyperelastic/equilibrium_system.h>
 #include <hyperelastic/formulation/formulation.h>
@@ -154,10 +155,13 @@ namespace hyperelastic
     std::unique_ptr<ElasticityOperator<dim>>       elasticity;
     std::unique_ptr<TimeStepping<dim>>             stepping;
     std::unique_ptr<EquilibriumSystem<dim>>        system;
-    std::unique_ptr<StepPostprocessor<dim>>        postprocessor;
-    std::unique_ptr<OutputWriter<dim>>             writer;
-    LinearSolver                                   linear_solver;
-    NewtonSolver                                   newton;
+    /// The obstacles' barrier term ('Contact', owned by the operator; null
+    /// without obstacles).
+    ObstacleContact<dim>                   *contact = nullptr;
+    std::unique_ptr<StepPostprocessor<dim>> postprocessor;
+    std::unique_ptr<OutputWriter<dim>>      writer;
+    LinearSolver                            linear_solver;
+    NewtonSolver                            newton;
 
     std::vector<StepSummary<dim>> step_summaries;
   };

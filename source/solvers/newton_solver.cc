@@ -75,6 +75,8 @@ namespace hyperelastic
         s << "";
       s << std::setw(9) << row.linear_iterations
         << (row.projected ? "  projected" : "");
+      if (row.feasible_step < 1.)
+        s << "  feasible step " << row.feasible_step;
       return s.str();
     }
   } // namespace
@@ -142,7 +144,10 @@ namespace hyperelastic
       }
 
     row.backtracks = 0;
-    for (double alpha = 1.;; alpha *= 0.5)
+    // The first trial is the full step or, where it would leave the
+    // feasible set (a vertex through an obstacle), the step cut to it.
+    row.feasible_step = std::min(1., system.largest_feasible_step());
+    for (double alpha = row.feasible_step;; alpha *= 0.5)
       {
         const TrialPoint trial = system.evaluate_trial(alpha, check);
         bool             ok    = trial.admissible;

@@ -14,6 +14,7 @@
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/loads/load_term.h>
 
+#include <algorithm>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -30,13 +31,12 @@ namespace hyperelastic
     /// (create_load_terms()), which must outlive the operator.
     /// A non-null @p material_part (the mixed formulation's, stiffness
     /// warping's) replaces both.
-    ElasticityOperator(
-      const dealii::DoFHandler<dim>  &dof_handler,
-      const dealii::Mapping<dim>     &mapping,
-      const Material<dim>            &material,
-      const BoundaryConditions<dim>  &boundary_conditions,
-      bool                            fast_p1       = true,
-      std::unique_ptr<Assembler<dim>> material_part = nullptr);
+    ElasticityOperator(const dealii::DoFHandler<dim>  &dof_handler,
+                       const dealii::Mapping<dim>     &mapping,
+                       const Material<dim>            &material,
+                       const BoundaryConditions<dim>  &boundary_conditions,
+                       bool                            fast_p1       = true,
+                       std::unique_ptr<Assembler<dim>> material_part = nullptr);
     ~ElasticityOperator();
 
     /// Whether the P1 kernel is in use.
@@ -98,6 +98,19 @@ namespace hyperelastic
     EnergyEvaluation
     evaluate(const VectorType &u, const double t, bool with_energy) const;
 
+    /// The smallest of the load terms' largest feasible steps from @p u
+    /// along @p direction (1 if none limits it). Collective.
+    double
+    largest_feasible_step(const VectorType &u,
+                          const VectorType &direction,
+                          const double      t) const
+    {
+      double alpha = 1.;
+      for (const auto &term : terms)
+        alpha = std::min(alpha, term->largest_feasible_step(u, direction, t));
+      return alpha;
+    }
+
     /// Total potential energy alone (collective).
     double
     total_energy(const VectorType &u, const double t) const
@@ -115,7 +128,7 @@ namespace hyperelastic
     void
     load_forces(const VectorType &u, double t, VectorType &external) const;
 
-    const dealii::DoFHandler<dim>              &dof_handler;
+    const dealii::DoFHandler<dim> &dof_handler;
     /// Whether a material part was given (then there is no P1 kernel).
     const bool                                  replaced;
     std::unique_ptr<Assembler<dim>>             generic;

@@ -70,6 +70,19 @@ namespace hyperelastic
       (void)u, (void)t;
       return 0.;
     }
+
+    /// The largest step length alpha in (0, 1] for which u + alpha
+    /// @p direction stays admissible for this term (contact: no vertex
+    /// reaches an obstacle); 1 if the term sets no limit. @p u and
+    /// @p direction: owned entries are read. Collective.
+    virtual double
+    largest_feasible_step(const VectorType &u,
+                          const VectorType &direction,
+                          double            t) const
+    {
+      (void)u, (void)direction, (void)t;
+      return 1.;
+    }
   };
 
   /// Throws InputError on every rank if the load of scene entry @p entry was

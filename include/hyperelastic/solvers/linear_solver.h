@@ -93,11 +93,11 @@ namespace hyperelastic
     }
 
   private:
-    const LinearSolverParameters              parameters;
-    std::vector<double>                       null_space;
-    unsigned int                              n_modes      = 0;
-    unsigned int                              n_components = 1;
-    dealii::TrilinosWrappers::PreconditionAMG amg;
+    const LinearSolverParameters               parameters;
+    std::vector<double>                        null_space;
+    unsigned int                               n_modes      = 0;
+    unsigned int                               n_components = 1;
+    dealii::TrilinosWrappers::PreconditionAMG  amg;
     std::unique_ptr<SaddlePointPreconditioner> saddle_point;
     /// The displacement rows of null_space (saddle point only).
     std::vector<double> block_null_space;
@@ -124,7 +124,7 @@ namespace hyperelastic
     /// The matrix the hierarchy was last built anew for (a refresh needs
     /// the same Epetra object, with new values).
     const void *amg_matrix = nullptr;
-    bool         symmetric         = true;
+    bool        symmetric  = true;
     /// Iterations per decade of the first solve with the current hierarchy
     /// (negative until it has run).
     double baseline_rate = -1.;

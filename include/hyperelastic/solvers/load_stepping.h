@@ -6,8 +6,8 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
-#include <hyperelastic/solvers/newton_solver.h>
 #include <hyperelastic/solvers/load_stepping_parameters.h>
+#include <hyperelastic/solvers/newton_solver.h>
 
 #include <functional>
 

@@ -1,6 +1,6 @@
-// The scene's Newton subsection: tolerances, line search, tangent, inexact Newton.
-// Declared with pattern, default and documentation; parsed with the values
-// checked (an invalid value is an InputError naming the entry).
+// The scene's Newton subsection: tolerances, line search, tangent, inexact
+// Newton. Declared with pattern, default and documentation; parsed with the
+// values checked (an invalid value is an InputError naming the entry).
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>

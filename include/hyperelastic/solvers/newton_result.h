@@ -10,11 +10,14 @@ namespace hyperelastic
   /// One row of the Newton table.
   struct NewtonIteration
   {
-    unsigned int iteration         = 0;
-    double       residual          = 0.;
-    double       update            = 0.; ///< norm of the step taken
-    double       step_length       = 1.; ///< alpha of the line search
-    unsigned int backtracks        = 0;  ///< trials rejected before it
+    unsigned int iteration   = 0;
+    double       residual    = 0.;
+    double       update      = 0.; ///< norm of the step taken
+    double       step_length = 1.; ///< alpha of the line search
+    unsigned int backtracks  = 0;  ///< trials rejected before it
+    /// The longest step that keeps the state feasible (contact), where the
+    /// line search started; 1 without such a limit.
+    double       feasible_step     = 1.;
     unsigned int linear_iterations = 0;
     /// Relative Krylov tolerance asked for (0: the linear solver's own).
     double forcing   = 0.;

@@ -98,6 +98,15 @@ namespace hyperelastic
     virtual double
     directional_derivative() const = 0;
 
+    /// The largest step length in (0, 1] along the last solved direction
+    /// that keeps the state feasible (no vertex through an obstacle); the
+    /// line search starts there. 1 by default.
+    virtual double
+    largest_feasible_step()
+    {
+      return 1.;
+    }
+
     /// What evaluate_trial() must find out about a trial iterate.
     enum class TrialCheck
     {

@@ -38,7 +38,8 @@ namespace hyperelastic
     /// Copies the displacement block A of @p matrix (for AMG), takes C_ii
     /// from its pressure block and keeps a reference to @p matrix (B y_u).
     void
-    extract_displacement_block(const dealii::TrilinosWrappers::SparseMatrix &matrix);
+    extract_displacement_block(
+      const dealii::TrilinosWrappers::SparseMatrix &matrix);
 
     const Epetra_CrsMatrix &
     displacement_block() const
@@ -49,7 +50,8 @@ namespace hyperelastic
     /// The rows of the displacement unknowns of @p modes (column-major over
     /// the owned rows, @p n_modes columns).
     std::vector<double>
-    displacement_rows(const std::vector<double> &modes, unsigned int n_modes) const;
+    displacement_rows(const std::vector<double> &modes,
+                      unsigned int               n_modes) const;
 
     /// Uses @p amg (built on displacement_block()) from now on.
     void

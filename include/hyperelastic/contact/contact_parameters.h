@@ -1,0 +1,67 @@
+// The scene's Contact subsection: the barrier (distance d_hat, stiffness
+// kappa), friction smoothing, and up to four rigid obstacles (plane, sphere,
+// meshed surface), each with a motion in time and a friction coefficient.
+// Declared with pattern, default and documentation; parsed with the values
+// checked (an invalid value is an InputError naming the entry).
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace hyperelastic
+{
+  using dealii::ParameterHandler;
+
+  enum class ObstacleType
+  {
+    none,
+    plane,
+    sphere,
+    mesh
+  };
+
+  struct ObstacleParameters
+  {
+    /// "Contact/Obstacle k", for messages.
+    std::string         subsection;
+    unsigned int        number = 0; ///< k
+    ObstacleType        type   = ObstacleType::none;
+    std::vector<double> point;  ///< plane: a point on it; sphere: its centre
+    std::vector<double> normal; ///< plane: unit normal towards the body
+    double              radius = 1.;
+    std::string         file;
+    /// Displacement of the whole obstacle, one expression of t per axis.
+    std::vector<std::string> motion;
+    double                   friction = 0.;
+  };
+
+  struct ContactParameters
+  {
+    static constexpr unsigned int max_obstacles = 4;
+    /// d_hat; 0: automatic (1e-3 of the mesh's bounding-box diagonal).
+    double barrier_distance = 0.;
+    /// kappa; 0: automatic (from the material's stiffness and the boundary
+    /// vertices' spacing).
+    double barrier_stiffness  = 0.;
+    double friction_smoothing = 0.;
+    /// The obstacles whose Type is not none, in the order of their sections.
+    std::vector<ObstacleParameters> obstacles;
+
+    bool
+    active() const
+    {
+      return !obstacles.empty();
+    }
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
+    /// The checks that need the dimension (number of coordinates and
+    /// expressions; a 2D scene may leave a third coordinate at 0).
+    void
+    check(unsigned int dim);
+  };
+} // namespace hyperelastic

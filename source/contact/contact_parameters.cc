@@ -1,0 +1,170 @@
+// The scene's Contact subsection: declaration, documentation and validation.
+#include <deal.II/base/utilities.h>
+
+#include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/contact/contact_parameters.h>
+
+#include <cmath>
+
+namespace hyperelastic
+{
+  using namespace entry_patterns;
+
+  void
+  ContactParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry(
+      "Barrier distance",
+      "0",
+      Double(0.),
+      "d_hat of the barrier b(d) = -kappa (d - d_hat)^2 ln(d / d_hat), active "
+      "for boundary vertices closer than d_hat to an obstacle. The converged "
+      "gaps are of the order of d_hat: smaller is more accurate and needs "
+      "more Newton iterations. 0: 1e-3 of the mesh's bounding-box diagonal.");
+    prm.declare_entry(
+      "Barrier stiffness",
+      "0",
+      Double(0.),
+      "kappa, the barrier's scale: the barrier energy is kappa sum_a A_a "
+      "b(d_a), A_a the boundary area (2D: length) of vertex a, so kappa is a "
+      "stress per length. 0: automatic, (lambda + 2 mu) / d_hat from the "
+      "material's small-strain moduli (a contact pressure of the order of "
+      "the modulus at gaps of the order of d_hat).");
+    prm.declare_entry("Friction smoothing",
+                      "0",
+                      Double(0.),
+                      "eps of the smoothed Coulomb friction (a slip below it "
+                      "sticks elastically). 0: automatic. Friction is not "
+                      "available yet: every 'Friction coefficient' must be 0.");
+    for (unsigned int k = 1; k <= max_obstacles; ++k)
+      {
+        prm.enter_subsection("Obstacle " + std::to_string(k));
+        prm.declare_entry("Type",
+                          "none",
+                          Selection("none|plane|sphere|mesh"),
+                          "A rigid obstacle: 'plane' (the body stays on the "
+                          "side its normal points to), 'sphere' (the body "
+                          "stays outside it), 'mesh' (a gmsh surface; not "
+                          "available yet), or 'none'.");
+        prm.declare_entry("Point",
+                          "0, 0, 0",
+                          List(Double()),
+                          "plane: a point on it; sphere: its centre (dim "
+                          "coordinates; in 2D a third coordinate must be 0).");
+        prm.declare_entry("Normal",
+                          "0, 0, 1",
+                          List(Double()),
+                          "plane: the normal pointing to the side the body is "
+                          "on (normalised here).");
+        prm.declare_entry("Radius", "1", Double(), "sphere: its radius > 0.");
+        prm.declare_entry("File",
+                          "",
+                          Anything(),
+                          "mesh: gmsh file of the obstacle's surface (not "
+                          "available yet).");
+        prm.declare_entry("Motion",
+                          "0; 0; 0",
+                          Anything(),
+                          "Displacement of the whole obstacle, one expression "
+                          "of t per axis separated by ';' (t: the load factor "
+                          "or the time); the Loading constants may be used.");
+        prm.declare_entry("Friction coefficient",
+                          "0",
+                          Double(0.),
+                          "Coulomb's mu between the body and this obstacle "
+                          "(0: frictionless; friction is not available yet).");
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+  void
+  ContactParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    barrier_distance   = get_finite(prm, "Contact", "Barrier distance");
+    barrier_stiffness  = get_finite(prm, "Contact", "Barrier stiffness");
+    friction_smoothing = get_finite(prm, "Contact", "Friction smoothing");
+    obstacles.clear();
+    for (unsigned int k = 1; k <= max_obstacles; ++k)
+      {
+        const std::string name = "Obstacle " + std::to_string(k);
+        prm.enter_subsection(name);
+        ObstacleParameters o;
+        o.subsection         = "Contact/" + name;
+        o.number             = k;
+        const std::string ty = prm.get("Type");
+        o.type               = ty == "plane"    ? ObstacleType::plane
+                               : ty == "sphere" ? ObstacleType::sphere
+                               : ty == "mesh"   ? ObstacleType::mesh
+                                                : ObstacleType::none;
+        for (const auto &v :
+             dealii::Utilities::split_string_list(prm.get("Point")))
+          o.point.push_back(dealii::Utilities::string_to_double(v));
+        for (const auto &v :
+             dealii::Utilities::split_string_list(prm.get("Normal")))
+          o.normal.push_back(dealii::Utilities::string_to_double(v));
+        o.radius   = get_finite(prm, o.subsection, "Radius");
+        o.file     = prm.get("File");
+        o.motion   = split_expressions(prm.get("Motion"));
+        o.friction = get_finite(prm, o.subsection, "Friction coefficient");
+        prm.leave_subsection();
+        if (o.type == ObstacleType::none)
+          continue;
+        if (o.type == ObstacleType::mesh)
+          reject(o.subsection + "/Type",
+                 "mesh",
+                 "meshed obstacles are not available yet; use 'plane' or "
+                 "'sphere'");
+        if (o.friction != 0.)
+          reject(o.subsection + "/Friction coefficient",
+                 prm.get("Friction coefficient"),
+                 "friction is not available yet: set it to 0");
+        if (o.type == ObstacleType::sphere && !(o.radius > 0.))
+          reject(o.subsection + "/Radius",
+                 std::to_string(o.radius),
+                 "must be positive");
+        obstacles.push_back(o);
+      }
+    prm.leave_subsection();
+  }
+
+  void
+  ContactParameters::check(const unsigned int dim)
+  {
+    // A 2D scene may keep the 3D defaults: a third coordinate or
+    // expression must then be zero and is dropped.
+    const auto fit = [dim](std::vector<double> &values,
+                           const std::string   &entry) {
+      if (values.size() == 3 && dim == 2 && values[2] == 0.)
+        values.pop_back();
+      if (values.size() != dim)
+        reject(entry,
+               std::to_string(values.size()) + " values",
+               "needs " + std::to_string(dim) + " values");
+    };
+    for (auto &o : obstacles)
+      {
+        fit(o.point, o.subsection + "/Point");
+        if (o.motion.size() == 3 && dim == 2 && o.motion[2] == "0")
+          o.motion.pop_back();
+        if (o.motion.size() != dim)
+          reject(o.subsection + "/Motion",
+                 std::to_string(o.motion.size()) + " expressions",
+                 "needs " + std::to_string(dim) +
+                   " expressions separated by ';'");
+        if (o.type != ObstacleType::plane)
+          continue;
+        fit(o.normal, o.subsection + "/Normal");
+        double norm = 0.;
+        for (const double n : o.normal)
+          norm += n * n;
+        norm = std::sqrt(norm);
+        if (!(norm > 0.))
+          reject(o.subsection + "/Normal", "0", "must not be the zero vector");
+        for (double &n : o.normal)
+          n /= norm;
+      }
+  }
+} // namespace hyperelastic
