@@ -194,59 +194,88 @@ namespace
       }
   }
 
+  /// A unit block of neo-Hookean material (Young's modulus @p young,
+  /// Poisson's ratio 0.3) with its bottom at height @p bottom, in boxes of
+  /// @p n per side (2D; n / 2 in 3D), under the gravity @p g per unit
+  /// volume, above a floor plane at height @p floor (Contact/Obstacle 1,
+  /// barrier distance @p d_hat), without VTU output or Newton table.
+  template <int dim>
+  std::string
+  block_above_floor(const double       bottom,
+                    const unsigned int n,
+                    const std::string &young,
+                    const std::string &g,
+                    const std::string &floor,
+                    const std::string &d_hat)
+  {
+    const bool        three = dim == 3;
+    const std::string low = number(bottom), high = number(bottom + 1.);
+    const std::string m = std::to_string(three ? n / 2 : n);
+    return subsection("Problem", entry("Dimension", std::to_string(dim))) +
+           subsection(
+             "Mesh",
+             entry("Lower corner", three ? "0, 0, " + low : "0, " + low) +
+               entry("Upper corner", three ? "1, 1, " + high : "1, " + high) +
+               entry("Subdivisions",
+                     three ? m + ", " + m + ", " + m : m + ", " + m)) +
+           subsection("Material",
+                      entry("Model", "neo-Hookean") +
+                        entry("Young's modulus", young) +
+                        entry("Poisson's ratio", "0.3")) +
+           subsection("Loading",
+                      entry("Body force", three ? "0; 0; -" + g : "0; -" + g)) +
+           subsection("Output",
+                      entry("Write VTU", "false") + entry("Verbose", "false")) +
+           subsection(
+             "Contact",
+             entry("Barrier distance", d_hat) +
+               subsection("Obstacle 1",
+                          entry("Type", "plane") +
+                            entry("Point",
+                                  three ? "0, 0, " + floor : "0, " + floor) +
+                            entry("Normal", three ? "0, 0, 1" : "0, 1")));
+  }
+
+  /// The value of CSV column @p name in @p summary (NaN if absent).
+  template <int dim>
+  double
+  column(const StepSummary<dim> &summary, const std::string &name)
+  {
+    for (const auto &c : summary.columns())
+      if (c.name == name)
+        return c.value;
+    return std::nan("");
+  }
+
   template <int dim>
   void
   resting(Checker &checker)
   {
     const bool        three = dim == 3;
-    const std::string v     = three ? "0; 0; -0.1" : "0; -0.1";
     const std::string scene =
-      subsection("Problem", entry("Dimension", std::to_string(dim))) +
-      subsection("Mesh",
-                 entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                   entry("Upper corner", three ? "1, 1, 1" : "1, 1") +
-                   entry("Subdivisions", three ? "3, 3, 3" : "6, 6")) +
-      subsection("Material",
-                 entry("Model", "neo-Hookean") + entry("Young's modulus", "1") +
-                   entry("Poisson's ratio", "0.3")) +
-      subsection("Loading",
-                 entry("Body force", v) + entry("Number of load steps", "2")) +
+      block_above_floor<dim>(0., 6, "1", "0.1", "-0.005", "0.01") +
+      subsection("Loading", entry("Number of load steps", "2")) +
       dirichlet(1, 0, "x", "0") + (three ? dirichlet(2, 2, "y", "0") : "") +
-      tight_solver("direct") +
-      subsection("Output",
-                 entry("Write VTU", "false") + entry("Verbose", "false")) +
-      subsection("Contact",
-                 entry("Barrier distance", "0.01") +
-                   subsection("Obstacle 1",
-                              entry("Type", "plane") +
-                                entry("Point",
-                                      three ? "0, 0, -0.005" : "0, -0.005") +
-                                entry("Normal", three ? "0, 0, 1" : "0, 1")));
-    const auto  problem = run_scene<dim>(scene);
-    const auto &last    = problem->summaries().back();
-    const auto  column  = [&](const std::string &name) {
-      for (const auto &c : last.columns())
-        if (c.name == name)
-          return c.value;
-      return std::nan("");
-    };
-    const std::string tag = std::to_string(dim) + "D resting block: ";
-    const std::string up  = three ? "z" : "y";
+      tight_solver("direct");
+    const auto        problem = run_scene<dim>(scene);
+    const auto       &last    = problem->summaries().back();
+    const std::string tag     = std::to_string(dim) + "D resting block: ";
+    const std::string up      = three ? "z" : "y";
     // Weight: 0.1 per unit volume of the unit block.
     checker.close(tag + "contact_force_1_" + up + " = weight 0.1",
-                  column("contact_force_1_" + up),
+                  column(last, "contact_force_1_" + up),
                   0.1,
                   0.1,
                   1e-8);
     checker.at_most(tag + "|contact_force_1_x| / weight",
-                    std::abs(column("contact_force_1_x")) / 0.1,
+                    std::abs(column(last, "contact_force_1_x")) / 0.1,
                     1e-8);
-    const double d = column("contact_min_distance");
+    const double d = column(last, "contact_min_distance");
     checker.is_true(tag + "0 < contact_min_distance = " + std::to_string(d) +
                       " < d_hat",
                     d > 0. && d < 0.01);
     checker.above(tag + "contact_active_pairs",
-                  column("contact_active_pairs"),
+                  column(last, "contact_active_pairs"),
                   0.);
   }
 
@@ -254,56 +283,28 @@ namespace
   void
   drop(Checker &checker)
   {
-    const bool        three = dim == 3;
     const std::string scene =
-      subsection("Problem", entry("Dimension", std::to_string(dim))) +
-      subsection("Mesh",
-                 entry("Lower corner", three ? "0, 0, 0.1" : "0, 0.1") +
-                   entry("Upper corner", three ? "1, 1, 1.1" : "1, 1.1") +
-                   entry("Subdivisions", three ? "2, 2, 2" : "4, 4")) +
-      subsection("Material",
-                 entry("Model", "neo-Hookean") +
-                   entry("Young's modulus", "20") +
-                   entry("Poisson's ratio", "0.3")) +
-      subsection("Loading", entry("Body force", three ? "0; 0; -1" : "0; -1")) +
+      block_above_floor<dim>(0.1, 4, "20", "1", "0", "0.005") +
       subsection("Time integration",
                  entry("Scheme", "backward Euler") +
-                   entry("Time step", "0.05") + entry("End time", "1.5")) +
-      subsection("Output",
-                 entry("Write VTU", "false") + entry("Verbose", "false")) +
-      subsection("Contact",
-                 entry("Barrier distance", "0.005") +
-                   subsection("Obstacle 1",
-                              entry("Type", "plane") +
-                                entry("Point", three ? "0, 0, 0" : "0, 0") +
-                                entry("Normal", three ? "0, 0, 1" : "0, 1")));
+                   entry("Time step", "0.05") + entry("End time", "1.5"));
     const auto        problem  = run_scene<dim>(scene);
-    const std::string up       = three ? "z" : "y";
+    const std::string up       = dim == 3 ? "z" : "y";
     double            smallest = 1e300, growth = -1e300, most_force = 0.;
     double            previous = 0., upward = 0.;
     bool              hit = false;
     for (const auto &s : problem->summaries())
       {
-        double distance = 0., force = 0., total = 0., momentum = 0.;
-        for (const auto &c : s.columns())
-          {
-            if (c.name == "contact_min_distance")
-              distance = c.value;
-            if (c.name == "contact_force_1_" + up)
-              force = c.value;
-            if (c.name == "total_energy")
-              total = c.value;
-            if (c.name == "momentum_" + up)
-              momentum = c.value;
-          }
-        smallest = std::min(smallest, distance);
+        const double total = column(s, "total_energy");
+        const double force = column(s, "contact_force_1_" + up);
+        smallest = std::min(smallest, column(s, "contact_min_distance"));
         if (s.step > 1)
           growth = std::max(growth, total - previous);
         previous   = total;
         most_force = std::max(most_force, force);
         hit        = hit || force > 0.;
         if (hit)
-          upward = std::max(upward, momentum);
+          upward = std::max(upward, column(s, "momentum_" + up));
       }
     const std::string tag = std::to_string(dim) + "D drop: ";
     checker.above(tag + "smallest contact_min_distance over all steps",
