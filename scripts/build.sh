@@ -5,11 +5,13 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build_type=${BUILD_TYPE:-Release}
 launcher=()
 # ccache, where installed, makes rebuilds after a branch switch cheap.
-# CCACHE_BASEDIR makes the paths under the checkout relative, so that another
-# clone of the repository (CI's) finds the objects this one compiled.
+# CCACHE_BASEDIR makes the paths under the checkout relative and
+# CCACHE_NOHASHDIR leaves the build folder out of the hash (deal.II's flags
+# have -g), so that another clone of the repository (CI's) finds the objects
+# this one compiled.
 if command -v ccache >/dev/null 2>&1; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-  export CCACHE_BASEDIR="$root"
+  export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 fi
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE="$build_type" "${launcher[@]}" >/dev/null
 cmake --build "$root/build" -j "$(nproc)"
