@@ -22,6 +22,8 @@
 //                a smoothly deformed cube, body force -Div P), neo-Hookean;
 //                error: L2 error of the displacement relative to its L2
 //                norm (error_h1: the same in the H1 seminorm)
+//   SCENE ball   a rigid ball pressed into a soft slab (contact, issue 26):
+//                t_contact is the contact term's share of the phases
 //   N            cells across the bar's width (4N x N x N boxes, 6 tets each;
 //                manufactured: N x N x N boxes; twist_file: 1/h)
 //   DEGREE       1 (default) or 2
@@ -99,8 +101,35 @@ namespace
                           entry("File", "twist_bar_" + std::to_string(n) + ".msh")) +
              subsection("Dirichlet 1", entry("Boundary id", "1")) +
              subsection("Dirichlet 2", entry("Boundary id", "2"));
+    // A rigid ball of radius 0.5 pressed 0.1 deep into the slab
+    // [0, 2] x [0, 2] x [0, 0.5] (4n x 4n x n boxes) glued at its bottom;
+    // frictionless, d_hat = 0.005, 5 load steps.
+    if (scene == "ball")
+      {
+        const std::string m = std::to_string(4 * n), k = std::to_string(n);
+        return subsection("Problem", entry("Dimension", "3")) +
+               subsection("Mesh",
+                          entry("Lower corner", "0, 0, 0") +
+                            entry("Upper corner", "2, 2, 0.5") +
+                            entry("Subdivisions", m + ", " + m + ", " + k)) +
+               subsection("Material",
+                          entry("Model", "neo-Hookean") +
+                            entry("Young's modulus", "1") +
+                            entry("Poisson's ratio", "0.3")) +
+               subsection("Loading", entry("Number of load steps", "5")) +
+               dirichlet(1, 4, "x, y, z", "0; 0; 0") +
+               subsection("Output", entry("Write VTU", "false")) +
+               subsection(
+                 "Contact",
+                 entry("Barrier distance", "0.005") +
+                   subsection("Obstacle 1",
+                              entry("Type", "sphere") +
+                                entry("Point", "1, 1, 1.002") +
+                                entry("Radius", "0.5") +
+                                entry("Motion", "0; 0; -0.102*t")));
+      }
     throw InputError("unknown benchmark scene '" + scene +
-                     "' (bar, twist, twist_file, manufactured)");
+                     "' (bar, twist, twist_file, manufactured, ball)");
   }
 
   /// Largest nodal error against the exact homogeneous stretch, relative to
@@ -188,7 +217,7 @@ main(int argc, char *argv[])
     "krylov_per_newton,amg_setups,t_setup,t_tangent_assembly,t_residual,t_line_search,"
     "t_preconditioner,t_krylov,t_output,t_total,t_spmv,"
     "assembly_per_newton_in_spmv,peak_memory_bytes,memory_per_dof_bytes,"
-    "energy,error,degree,error_h1";
+    "energy,error,degree,error_h1,t_contact";
   if (argc > 1 && std::string(argv[1]) == "--header")
     {
       if (root)
@@ -198,7 +227,7 @@ main(int argc, char *argv[])
   return run_and_report(
     [&]() {
       if (argc < 3)
-        throw InputError("usage: hyperelastic_benchmark bar|twist|twist_file|manufactured N [DEGREE [SECTION/ENTRY=VALUE ...]]");
+        throw InputError("usage: hyperelastic_benchmark bar|twist|twist_file|manufactured|ball N [DEGREE [SECTION/ENTRY=VALUE ...]]");
       const std::string  scene  = argv[1];
       const unsigned int n      = std::stoul(argv[2]);
       const unsigned int degree = argc > 3 ? std::stoul(argv[3]) : 1;
@@ -260,7 +289,8 @@ main(int argc, char *argv[])
                               "line search",
                               "preconditioner setup",
                               "linear solve",
-                              "output"};
+                              "output",
+                              "contact"};
       std::map<std::string, double> t;
       for (const char *phase : phases)
         t[phase] = time(phase);
@@ -285,7 +315,7 @@ main(int argc, char *argv[])
                   << std::setprecision(12)
                   << problem.summaries().back().energy << ","
                   << std::setprecision(6) << error << "," << degree << ","
-                  << errors.second << std::endl;
+                  << errors.second << "," << t["contact"] << std::endl;
     },
     MPI_COMM_WORLD);
 }

@@ -54,8 +54,8 @@ namespace hyperelastic
 
   template <int dim>
   void
-  EquilibriumSystem<dim>::attach(const ElasticityOperator<dim> &elasticity,
-                                 TimeStepping<dim>             &stepping)
+  EquilibriumSystem<dim>::attach(ElasticityOperator<dim> &elasticity,
+                                 TimeStepping<dim>       &stepping)
   {
     this->elasticity = &elasticity;
     this->stepping   = &stepping;
@@ -86,6 +86,10 @@ namespace hyperelastic
           largest = std::max(largest, std::abs(line.inhomogeneity));
         moves_constraints = Utilities::MPI::max(largest, comm) > 0.;
       }
+    // A load term's admissible set on its way (an obstacle moving within
+    // the step) makes this iteration a predictor too: the linearization
+    // carries the rest of its motion.
+    const bool         moves_terms = elasticity->moving(current_load_factor);
     TimerOutput::Scope scope(parts.timer, "assembly");
     // The update of this linearization must satisfy these constraints.
     active_constraints =
@@ -96,7 +100,7 @@ namespace hyperelastic
                                 tangent,
                                 rhs,
                                 positive_semidefinite);
-    return moves_constraints;
+    return moves_constraints || moves_terms;
   }
 
   template <int dim>
@@ -212,6 +216,7 @@ namespace hyperelastic
   {
     u             = trial;
     solution_size = std::max(solution_size, u.l2_norm());
+    elasticity->advance(step_length, current_load_factor);
     return step_length * update.l2_norm();
   }
 
@@ -265,11 +270,21 @@ namespace hyperelastic
                          parts.pcout);
   }
 
+  template <int dim>
+  bool
+  EquilibriumSystem<dim>::update_lagged_quantities()
+  {
+    return elasticity->update_lagged(u_ghosted, current_load_factor);
+  }
+
   // ------------------------------------------------------- SteppedSystem
   template <int dim>
   void
   EquilibriumSystem<dim>::set_load_factor(const double t)
   {
+    // The terms' step state starts at the last converged one (before the
+    // driver's predictor, which is checked against it).
+    elasticity->begin_step(converged.u, converged.load_factor);
     current_load_factor =
       stepping->begin_step(t, converged, previous, u, u_ghosted);
   }

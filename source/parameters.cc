@@ -47,13 +47,12 @@ namespace hyperelastic
     linear_solver.parse(prm);
     output.parse(prm);
     time_integration.parse(prm);
-    contact.parse(prm);
+    contact.parse(prm, scene_folder);
 
     // Checks that need the dimension.
     const unsigned int dim = problem.dimension;
     contact.check(dim);
-    if (contact.active() &&
-        time_integration.scheme == TimeScheme::midpoint)
+    if (contact.active() && time_integration.scheme == TimeScheme::midpoint)
       reject("Time integration/Scheme",
              "implicit midpoint",
              "contact (Contact/Obstacle ...) needs a scheme whose solved "

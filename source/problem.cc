@@ -92,8 +92,9 @@ namespace hyperelastic
           parameters.contact,
           parameters.loading.constants,
           dof_handler,
-          mapping,
-          material->small_strain_moduli());
+          material->small_strain_moduli(),
+          parameters.time_integration.dynamic());
+        term->set_timer(timer);
         contact = term.get();
         elasticity->add_term(std::move(term));
       }
@@ -153,6 +154,12 @@ namespace hyperelastic
             << " obstacle(s), barrier distance d_hat = "
             << contact->barrier_distance()
             << ", barrier stiffness kappa = " << contact->barrier_stiffness()
+            << (contact->has_friction()
+                  ? (parameters.time_integration.dynamic()
+                       ? ", friction smoothing eps_v = "
+                       : ", friction smoothing eps = ") +
+                      std::to_string(contact->friction_smoothing(1.))
+                  : std::string())
             << std::endl;
     const std::string warning = formulation->warning(*material);
     if (!warning.empty())
@@ -197,13 +204,30 @@ namespace hyperelastic
     TimerOutput::Scope output_scope(timer, "output");
     const CellFields   fields = compute_cell_fields(
       dof_handler, mapping, *material, *material3d, system->solution());
+    std::vector<typename OutputWriter<dim>::NodalField> nodal;
+    if (const VectorType *velocity = stepping->output_velocity())
+      nodal.push_back({"velocity", velocity});
+    // The force the obstacles exert on the body, per boundary vertex.
+    VectorType contact_force;
+    if (contact)
+      {
+        VectorType owned(dof_handler.locally_owned_dofs(),
+                         dof_handler.get_communicator());
+        contact->contact_forces(system->solution(),
+                                system->load_factor(),
+                                owned);
+        owned.compress(VectorOperation::add);
+        contact_force.reinit(system->solution());
+        contact_force = owned;
+        nodal.push_back({"contact_force", &contact_force});
+      }
     writer->write_fields(step,
                          system->load_factor(),
                          dof_handler,
                          mapping,
                          system->solution(),
                          fields,
-                         stepping->output_velocity());
+                         nodal);
   }
 
   template <int dim>

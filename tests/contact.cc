@@ -1,20 +1,30 @@
-// Contact with rigid obstacles (Contact I): the barrier term against finite
-// differences, and a block resting on a plane.
+// Contact with rigid obstacles (Contact I, issue 26).
 //   fd DIM      the barrier's forces against central differences of its
-//               potential, for a plane and a sphere (relative 1e-6), and its
-//               load stiffness against central differences of the forces
-//               for the plane (1e-6); the sphere's projected stiffness is
+//               potential, for a plane, a sphere and a faceted sphere
+//               (surface mesh) (relative 1e-6), and its load stiffness
+//               against central differences of the forces for the plane
+//               (1e-6); the projected stiffness of the curved obstacles is
 //               positive semi-definite; the feasible step keeps every
 //               distance positive and cuts a step that would cross.
 //   resting DIM a block under gravity on a plane, rollers on its symmetry
 //               planes: the plane's total force equals the weight (1e-8),
-//               every distance lies in (0, d_hat), the run is the same on
-//               any number of ranks (the CSV columns are printed).
+//               every distance lies in (0, d_hat); the same floor as a
+//               surface mesh gives the same run (1e-9).
 //   drop DIM    a block dropped on a plane with backward Euler: every
 //               step's contact_min_distance > 0, the total energy never
 //               grows (the scheme dissipates), the block hits the floor and
 //               bounces (upward momentum after the impact).
-// Usage: mpirun -np N contact CASE DIM
+//   compression DIM  a block pressed by a moving plate onto a plane,
+//               frictionless: the homogeneous uniaxial force and lateral
+//               stretch within the bound the gaps allow (dF/da d_hat), the
+//               error falling with d_hat.
+//   friction DIM  a block on a rough floor (mu = 0.5), backward Euler:
+//               sliding, it decelerates at mu g (2 %); pulled by 0.8 mu N it
+//               sticks (creeps slower than eps_v); pulled by 1.2 mu N it
+//               accelerates at 0.2 mu g (2 %).
+//   hertz 2 MESH  a half disk pressed onto a plane: the contact half-width
+//               against Hertz's (5 %); MESH: meshes/half_disk_2d.msh.
+// Usage: mpirun -np N contact CASE DIM [MESH]
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/contact/obstacle_contact.h>
@@ -25,8 +35,15 @@
 #include "support/scene_run.h"
 #include "support/scene_text.h"
 
+#include <array>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <set>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 using namespace hyperelastic;
 using namespace hyperelastic::testing;
@@ -34,6 +51,94 @@ using dealii::Utilities::MPI::sum;
 
 namespace
 {
+  /// Writes (rank 0) a gmsh file of a surface: @p points and @p elements
+  /// (vertex indices from 0; dim of them each: lines in 2D, triangles in
+  /// 3D), in the working folder; returns its absolute path. Collective.
+  template <int dim>
+  std::string
+  write_surface(const std::string                                &name,
+                const std::vector<dealii::Point<dim>>            &points,
+                const std::vector<std::array<unsigned int, dim>> &elements)
+  {
+    const std::string path = (std::filesystem::current_path() / name).string();
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      {
+        std::ofstream out(path);
+        out << std::setprecision(17) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+            << "$Nodes\n"
+            << points.size() << "\n";
+        for (unsigned int i = 0; i < points.size(); ++i)
+          out << i + 1 << " " << points[i][0] << " " << points[i][1] << " "
+              << (dim == 3 ? points[i][dim - 1] : 0.) << "\n";
+        out << "$EndNodes\n$Elements\n" << elements.size() << "\n";
+        for (unsigned int e = 0; e < elements.size(); ++e)
+          {
+            out << e + 1 << " " << (dim == 2 ? 1 : 2) << " 2 1 1";
+            for (const unsigned int v : elements[e])
+              out << " " << v + 1;
+            out << "\n";
+          }
+        out << "$EndElements\n";
+      }
+    MPI_Barrier(MPI_COMM_WORLD);
+    return path;
+  }
+
+  /// A sphere of radius 0.5 about the origin as a surface mesh: a polygon of
+  /// 24 sides (2D) or 12 x 24 latitude-longitude triangles (3D), its
+  /// vertices on the sphere.
+  template <int dim>
+  std::string
+  faceted_sphere_file()
+  {
+    const double                               R = 0.5, pi = M_PI;
+    std::vector<dealii::Point<dim>>            points;
+    std::vector<std::array<unsigned int, dim>> elements;
+    if constexpr (dim == 2)
+      {
+        for (unsigned int i = 0; i < 24; ++i)
+          {
+            points.emplace_back(R * std::cos(2 * pi * i / 24),
+                                R * std::sin(2 * pi * i / 24));
+            elements.push_back({{i, (i + 1) % 24}});
+          }
+      }
+    else
+      {
+        const unsigned int rings = 12, sectors = 24;
+        points.emplace_back(0., 0., R); // north pole: 0
+        for (unsigned int r = 1; r < rings; ++r)
+          for (unsigned int k = 0; k < sectors; ++k)
+            {
+              const double theta = pi * r / rings, phi = 2 * pi * k / sectors;
+              points.emplace_back(R * std::sin(theta) * std::cos(phi),
+                                  R * std::sin(theta) * std::sin(phi),
+                                  R * std::cos(theta));
+            }
+        points.emplace_back(0., 0., -R); // south pole
+        const auto ring = [&](const unsigned int r, const unsigned int k) {
+          return 1 + (r - 1) * sectors + k % sectors;
+        };
+        const unsigned int south = points.size() - 1;
+        for (unsigned int k = 0; k < sectors; ++k)
+          {
+            elements.push_back({{0, ring(1, k), ring(1, k + 1)}});
+            for (unsigned int r = 1; r + 1 < rings; ++r)
+              {
+                elements.push_back(
+                  {{ring(r, k), ring(r + 1, k), ring(r + 1, k + 1)}});
+                elements.push_back(
+                  {{ring(r, k), ring(r + 1, k + 1), ring(r, k + 1)}});
+              }
+            elements.push_back(
+              {{ring(rings - 1, k), south, ring(rings - 1, k + 1)}});
+          }
+      }
+    return write_surface<dim>("faceted_sphere_" + std::to_string(dim) + "d.msh",
+                              points,
+                              elements);
+  }
+
   /// The unit box's bottom face (y = 0 in 2D, z = 0 in 3D) is 'down'.
   template <int dim>
   ObstacleParameters
@@ -59,8 +164,12 @@ namespace
       }
     else
       {
+        // The sphere, or the faceted sphere of faceted_sphere_file() (its
+        // file's origin at the sphere's centre).
         o.radius         = 0.5;
         o.point[dim - 1] = -0.503;
+        if (type == ObstacleType::mesh)
+          o.file = faceted_sphere_file<dim>();
       }
     return o;
   }
@@ -78,16 +187,22 @@ namespace
     const MPI_Comm         comm = MPI_COMM_WORLD;
     BoxDiscretisation<dim> box(1., 4, 4, 1, comm);
     LameParameters         moduli = lame_parameters(1., 1.);
-    for (const ObstacleType type : {ObstacleType::plane, ObstacleType::sphere})
+    for (const ObstacleType type :
+         {ObstacleType::plane, ObstacleType::sphere, ObstacleType::mesh})
       {
         const std::string name =
           std::to_string(dim) + "D " +
-          (type == ObstacleType::plane ? "plane" : "sphere") + ": ";
+          (type == ObstacleType::plane    ? "plane"
+           : type == ObstacleType::sphere ? "sphere"
+                                          : "faceted sphere (mesh)") +
+          ": ";
         ContactParameters parameters;
         parameters.barrier_distance = 0.1;
         parameters.obstacles.push_back(obstacle<dim>(type, 1));
-        const ObstacleContact<dim> contact(
-          parameters, {}, box.dof_handler, box.mapping, moduli);
+        const ObstacleContact<dim> contact(parameters,
+                                           {},
+                                           box.dof_handler,
+                                           moduli);
 
         VectorType u(box.owned, comm), u_ghosted(box.owned, box.relevant, comm);
         VectorType v(box.owned, comm), w(box.owned, comm);
@@ -186,11 +301,42 @@ namespace
         u_ghosted = w;
         checker.is_true(name + "potential finite at the feasible step",
                         std::isfinite(contact.potential(u_ghosted, 0.)));
+        if (type != ObstacleType::mesh)
+          {
+            w = u;
+            w.add(alpha / 0.9 * 1.001, down);
+            u_ghosted = w;
+            checker.is_true(name + "past the crossing the potential is "
+                                   "infinite",
+                            !std::isfinite(contact.potential(u_ghosted, 0.)));
+            continue;
+          }
+        // A surface has no inside (its distance is unsigned): along the
+        // step the potential stays finite, and it grows towards the
+        // crossing at alpha / 0.9 (conservative advancement stops where the
+        // closest vertex keeps a tenth of its distance).
+        bool finite = true;
+        for (unsigned int i = 0; i <= 20; ++i)
+          finite = finite && std::isfinite(contact.potential(
+                               [&]() {
+                                 w = u;
+                                 w.add(alpha * i / 20., down);
+                                 u_ghosted = w;
+                                 return u_ghosted;
+                               }(),
+                               0.));
+        checker.is_true(name + "potential finite at 21 points of [0, alpha]",
+                        finite);
         w = u;
-        w.add(alpha / 0.9 * 1.001, down);
+        w.add(alpha, down);
+        u_ghosted             = w;
+        const double at_alpha = contact.potential(u_ghosted, 0.);
+        w                     = u;
+        w.add(0.999 * alpha / 0.9, down);
         u_ghosted = w;
-        checker.is_true(name + "past the crossing the potential is infinite",
-                        !std::isfinite(contact.potential(u_ghosted, 0.)));
+        checker.above(name + "potential near the crossing / at alpha",
+                      contact.potential(u_ghosted, 0.) / at_alpha,
+                      1.);
       }
   }
 
@@ -277,6 +423,49 @@ namespace
     checker.above(tag + "contact_active_pairs",
                   column(last, "contact_active_pairs"),
                   0.);
+
+    // The floor as a surface mesh (a square of 2 x 2 elements at the same
+    // height, 2 lines in 2D): the same distances, so the same run.
+    std::vector<dealii::Point<dim>>            points;
+    std::vector<std::array<unsigned int, dim>> elements;
+    if constexpr (dim == 2)
+      {
+        for (const double x : {-1., 0.5, 2.})
+          points.emplace_back(x, -0.005);
+        elements = {{0, 1}, {1, 2}};
+      }
+    else
+      {
+        for (const double y : {-1., 0.5, 2.})
+          for (const double x : {-1., 0.5, 2.})
+            points.emplace_back(x, y, -0.005);
+        for (unsigned int j = 0; j < 2; ++j)
+          for (unsigned int i = 0; i < 2; ++i)
+            {
+              const unsigned int a = 3 * j + i;
+              elements.push_back({{a, a + 1, a + 4}});
+              elements.push_back({{a, a + 4, a + 3}});
+            }
+      }
+    const std::string file =
+      write_surface<dim>("floor_" + std::to_string(dim) + "d.msh",
+                         points,
+                         elements);
+    const auto meshed = run_scene<dim>(
+      scene +
+      subsection("Contact",
+                 subsection("Obstacle 1",
+                            entry("Type", "mesh") + entry("File", file) +
+                              entry("Point", three ? "0, 0, 0" : "0, 0"))));
+    const auto &m = meshed->summaries().back();
+    for (const std::string name : {"contact_force_1_" + up,
+                                   std::string("contact_min_distance"),
+                                   std::string("energy")})
+      checker.close(tag + "meshed floor: " + name + " as with the plane",
+                    column(m, name),
+                    column(last, name),
+                    std::abs(column(last, name)),
+                    1e-9);
   }
 
   template <int dim>
@@ -320,6 +509,316 @@ namespace
                   upward,
                   0.);
   }
+
+  /// The homogeneous uniaxial state of the compressible neo-Hookean model
+  /// (psi = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2) at axial stretch
+  /// @p a with stress-free sides (plane strain in 2D: one lateral stretch
+  /// b, the thickness fixed; 3D: two lateral stretches b): returns b and the
+  /// axial first Piola-Kirchhoff stress P = mu (a - 1/a) + lambda ln J / a.
+  struct Uniaxial
+  {
+    double lateral = 1.;
+    double stress  = 0.;
+  };
+  Uniaxial
+  uniaxial(const int dim, const LameParameters &m, const double a)
+  {
+    // Lateral stress mu (b - 1/b) + lambda ln(a b^(dim-1)) / b = 0, by
+    // Newton on b (increasing in b).
+    Uniaxial u;
+    double  &b = u.lateral;
+    for (unsigned int it = 0; it < 50; ++it)
+      {
+        const double lnJ = std::log(a) + (dim - 1) * std::log(b);
+        const double f   = m.mu * (b - 1. / b) + m.lambda * lnJ / b;
+        const double df =
+          m.mu * (1. + 1. / (b * b)) + m.lambda * ((dim - 1) - lnJ) / (b * b);
+        b -= f / df;
+      }
+    const double lnJ = std::log(a) + (dim - 1) * std::log(b);
+    u.stress         = m.mu * (a - 1. / a) + m.lambda * lnJ / a;
+    return u;
+  }
+
+  /// A unit block between a floor plane (Obstacle 1) and a plate above it
+  /// (Obstacle 2), both at a distance d_hat / 2, the plate moving down by
+  /// @p squash over the load steps; rollers on the x = 0 (and y = 0)
+  /// faces; frictionless.
+  template <int dim>
+  std::string
+  block_between_plates(const double d_hat, const double squash)
+  {
+    const bool        three = dim == 3;
+    const std::string gap = number(0.5 * d_hat), top = number(1. + 0.5 * d_hat);
+    const std::string down = three ? "0, 0, " : "0, ";
+    return subsection("Problem", entry("Dimension", std::to_string(dim))) +
+           subsection("Mesh",
+                      entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
+                        entry("Upper corner", three ? "1, 1, 1" : "1, 1") +
+                        entry("Subdivisions", three ? "2, 2, 2" : "4, 4")) +
+           subsection("Material",
+                      entry("Model", "neo-Hookean") +
+                        entry("Young's modulus", "1") +
+                        entry("Poisson's ratio", "0.3")) +
+           subsection("Loading", entry("Number of load steps", "5")) +
+           dirichlet(1, 0, "x", "0") +
+           (three ? dirichlet(2, 2, "y", "0") : "") +
+           subsection("Output",
+                      entry("Write VTU", "false") + entry("Verbose", "false")) +
+           subsection(
+             "Contact",
+             entry("Barrier distance", number(d_hat)) +
+               subsection("Obstacle 1",
+                          entry("Type", "plane") +
+                            entry("Point", down + "-" + gap) +
+                            entry("Normal", three ? "0, 0, 1" : "0, 1")) +
+               subsection("Obstacle 2",
+                          entry("Type", "plane") + entry("Point", down + top) +
+                            entry("Normal", three ? "0, 0, -1" : "0, -1") +
+                            entry("Motion",
+                                  three ? "0; 0; -" + number(squash) + "*t"
+                                        : "0; -" + number(squash) + "*t"))) +
+           tight_solver("direct");
+  }
+
+  template <int dim>
+  void
+  compression(Checker &checker)
+  {
+    const double         squash = 0.2;
+    const LameParameters moduli = lame_parameters(1. / 2.6, 0.3 / (1.3 * 0.4));
+    const std::string    up     = dim == 3 ? "z" : "y";
+    const std::string    tag    = std::to_string(dim) + "D compression: ";
+    // The nominal axial stretch 1 - squash misses the two gaps' change,
+    // each below d_hat / 2 (they start at d_hat / 2 and stay in (0, d_hat)):
+    // the force is within dF/da d_hat of the nominal answer.
+    const Uniaxial nominal = uniaxial(dim, moduli, 1. - squash);
+    const double   slope   = (uniaxial(dim, moduli, 1. - squash + 1e-6).stress -
+                          uniaxial(dim, moduli, 1. - squash - 1e-6).stress) /
+                         2e-6;
+    std::vector<double> errors;
+    for (const double d_hat : {4e-3, 1e-3})
+      {
+        const auto problem =
+          run_scene<dim>(block_between_plates<dim>(d_hat, squash));
+        const auto       &last        = problem->summaries().back();
+        const std::string at          = "d_hat " + number(d_hat) + ": ";
+        const double      floor_force = column(last, "contact_force_1_" + up);
+        const double      plate_force = column(last, "contact_force_2_" + up);
+        // The plate pushes down (-), the floor up (+), both by the axial
+        // force |P| A0 (A0 = 1).
+        checker.close(tag + at + "floor force = -plate force",
+                      floor_force,
+                      -plate_force,
+                      std::abs(plate_force),
+                      1e-8);
+        const double error = std::abs(floor_force - (-nominal.stress));
+        checker.at_most(tag + at +
+                          "|floor force - homogeneous uniaxial force| / "
+                          "(dF/da d_hat)",
+                        error / (std::abs(slope) * d_hat),
+                        1.);
+        const double width = last.deformed_max[0] - last.deformed_min[0];
+        checker.at_most(
+          tag + at + "|lateral stretch - homogeneous| / (db/da d_hat)",
+          std::abs(width - nominal.lateral) /
+            (std::abs(uniaxial(dim, moduli, 1. - squash + 1e-6).lateral -
+                      uniaxial(dim, moduli, 1. - squash - 1e-6).lateral) /
+             2e-6 * d_hat),
+          1.);
+        const double d = column(last, "contact_min_distance");
+        checker.is_true(tag + at + "0 < contact_min_distance = " + number(d) +
+                          " < d_hat",
+                        d > 0. && d < d_hat);
+        errors.push_back(error);
+      }
+    checker.at_most(tag + "force error ratio d_hat 1e-3 / d_hat 4e-3 "
+                          "(converging with d_hat)",
+                    errors[1] / errors[0],
+                    0.5);
+  }
+
+  /// A unit block of stiff neo-Hookean material (E = 1e4, density 1: it
+  /// deforms by 1e-3 under its weight) with its bottom 0.99 d_hat above a
+  /// floor with friction coefficient 0.5 (near the gap where the barrier
+  /// carries the weight: it settles at once),
+  /// under gravity 10 and the horizontal body force @p pull, starting with
+  /// the horizontal velocity @p v0; backward Euler, h = 0.01.
+  template <int dim>
+  std::string
+  block_on_rough_floor(const double pull, const double v0, const double end)
+  {
+    const bool three = dim == 3;
+    return block_above_floor<dim>(0.00495, 4, "1e4", "10", "0", "0.005") +
+           subsection("Loading",
+                      entry("Body force",
+                            three ? number(pull) + "; 0; -10"
+                                  : number(pull) + "; -10")) +
+           subsection("Contact",
+                      subsection("Obstacle 1",
+                                 entry("Friction coefficient", "0.5"))) +
+           subsection("Time integration",
+                      entry("Scheme", "backward Euler") +
+                        entry("Density", "1") + entry("Time step", "0.01") +
+                        entry("End time", number(end)) +
+                        entry("Initial velocity",
+                              three ? number(v0) + "; 0; 0"
+                                    : number(v0) + "; 0"));
+  }
+
+  /// The summary of the step that ends at time @p t.
+  template <int dim>
+  const StepSummary<dim> &
+  at_time(const std::vector<StepSummary<dim>> &summaries, const double t)
+  {
+    for (const auto &s : summaries)
+      if (std::abs(s.load_factor - t) < 1e-9)
+        return s;
+    throw std::runtime_error("no step ends at t = " + number(t));
+  }
+
+  /// The mean horizontal acceleration of a unit mass over t in [0.1, 0.3],
+  /// from its momentum.
+  template <int dim>
+  double
+  mean_acceleration(const std::vector<StepSummary<dim>> &summaries)
+  {
+    return (column(at_time(summaries, 0.3), "momentum_x") -
+            column(at_time(summaries, 0.1), "momentum_x")) /
+           0.2;
+  }
+
+  template <int dim>
+  void
+  friction(Checker &checker)
+  {
+    const std::string tag  = std::to_string(dim) + "D friction: ";
+    const double      mu_g = 0.5 * 10.; // unit mass
+    // Sliding at v0 = 2: the friction decelerates it at mu g.
+    {
+      const auto problem =
+        run_scene<dim>(block_on_rough_floor<dim>(0., 2., 0.3));
+      const auto  &s = problem->summaries();
+      const double a = mean_acceleration(s);
+      checker.close(tag + "sliding block's deceleration over t in [0.1, 0.3] "
+                          "against mu g = 5",
+                    -a,
+                    mu_g,
+                    mu_g,
+                    0.02);
+      double smallest = 1e300;
+      for (const auto &row : s)
+        smallest = std::min(smallest, column(row, "contact_min_distance"));
+      checker.above(tag + "sliding: smallest contact_min_distance",
+                    smallest,
+                    0.);
+    }
+    // Pulled by T = 0.8 mu N from rest: it sticks, creeping slower than
+    // the smoothing velocity eps_v = d_hat per unit time = 0.005 (the
+    // smoothed law gives 0.4 eps_v) once the shear wave of the sudden pull
+    // has died out (t >= 0.2).
+    {
+      const auto problem =
+        run_scene<dim>(block_on_rough_floor<dim>(0.8 * mu_g, 0., 0.3));
+      double fastest = 0.;
+      for (const auto &row : problem->summaries())
+        if (row.load_factor > 0.2 - 1e-9)
+          fastest = std::max(fastest, std::abs(column(row, "momentum_x")));
+      checker.at_most(tag + "pulled by 0.8 mu N: largest |velocity_x| / eps_v "
+                            "for t in [0.2, 0.3]",
+                      fastest / 0.005,
+                      1.);
+    }
+    // Pulled by T = 1.2 mu N: it slides with acceleration (T - mu N) / m.
+    {
+      const auto problem =
+        run_scene<dim>(block_on_rough_floor<dim>(1.2 * mu_g, 0., 0.3));
+      const double a = mean_acceleration(problem->summaries());
+      checker.close(tag + "pulled by 1.2 mu N: acceleration over t in "
+                          "[0.1, 0.3] against 0.2 mu g = 1",
+                    a,
+                    0.2 * mu_g,
+                    0.2 * mu_g,
+                    0.02);
+    }
+  }
+
+  /// Hertz in plane strain: the half disk of radius R = 1 of
+  /// meshes/half_disk_2d.msh (triangles of 0.004 near its lowest point),
+  /// its flat top pushed down by 0.02 onto a rigid plane (d_hat = 1e-4),
+  /// neo-Hookean E = 1, nu = 0.3. The contact half-width b from the
+  /// computed vertex forces f_a at positions x_a, b = 2 sqrt(sum x_a^2 f_a
+  /// / sum f_a) (Hertz's elliptic pressure has the second moment b^2 / 4),
+  /// against Hertz's b = sqrt(4 F R / (pi E*)), E* = E / (1 - nu^2), F the
+  /// force per unit length.
+  void
+  hertz(Checker &checker, const std::string &mesh)
+  {
+    const std::string scene =
+      subsection("Problem", entry("Dimension", "2")) +
+      subsection("Mesh", entry("Source", "file") + entry("File", mesh)) +
+      subsection("Material",
+                 entry("Model", "neo-Hookean") + entry("Young's modulus", "1") +
+                   entry("Poisson's ratio", "0.3")) +
+      subsection("Loading", entry("Number of load steps", "4")) +
+      dirichlet(1, 1, "x, y", "0; -0.02*t") +
+      subsection("Output",
+                 entry("Write VTU", "false") + entry("Verbose", "false")) +
+      subsection("Contact",
+                 entry("Barrier distance", "1e-4") +
+                   subsection("Obstacle 1",
+                              entry("Type", "plane") +
+                                entry("Point", "0, -0.00005") +
+                                entry("Normal", "0, 1")));
+    const auto problem = run_scene<2>(scene);
+    // The vertex forces at the converged state, from a contact term made
+    // from the same scene on the same mesh.
+    Parameters parameters;
+    parameters.read_from_string(scene);
+    parameters.contact.check(2);
+    const auto              &dof_handler = problem->get_dof_handler();
+    const ObstacleContact<2> contact(parameters.contact,
+                                     {},
+                                     dof_handler,
+                                     lame_parameters(1. / 2.6,
+                                                     0.3 / (1.3 * 0.4)));
+    const VectorType        &u = problem->solution();
+    VectorType f(dof_handler.locally_owned_dofs(), MPI_COMM_WORLD);
+    contact.contact_forces(u, 1., f);
+    f.compress(dealii::VectorOperation::add);
+    double                                    F = 0., moment = 0.;
+    std::set<dealii::types::global_dof_index> seen;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const auto dof = cell->vertex_dof_index(v, 1);
+            if (!dof_handler.locally_owned_dofs().is_element(dof) ||
+                !seen.insert(dof).second)
+              continue;
+            const double x =
+              cell->vertex(v)[0] + u(cell->vertex_dof_index(v, 0));
+            F += f(dof);
+            moment += x * x * f(dof);
+          }
+    F                   = sum(F, MPI_COMM_WORLD);
+    moment              = sum(moment, MPI_COMM_WORLD);
+    const double E_star = 1. / (1. - 0.09);
+    const double b      = 2. * std::sqrt(moment / F);
+    const double hertz  = std::sqrt(4. * F * 1. / (M_PI * E_star));
+    checker.close("Hertz: sum of the vertex forces = contact_force_1_y",
+                  F,
+                  column(problem->summaries().back(), "contact_force_1_y"),
+                  F,
+                  1e-10);
+    checker.close("Hertz: contact half-width 2 sqrt(second moment of the "
+                  "forces) against sqrt(4 F R / (pi E*)), F = " +
+                    number(F),
+                  b,
+                  hertz,
+                  hertz,
+                  0.05);
+  }
 } // namespace
 
 int
@@ -329,19 +828,29 @@ main(int argc, char **argv)
     argc,
     argv,
     "fd",
-    [](const std::string &which, Checker &checker) {
+    [&](const std::string &which, Checker &checker) {
       if (which == "fd")
         fd<2>(checker);
       else if (which == "drop")
         drop<2>(checker);
+      else if (which == "compression")
+        compression<2>(checker);
+      else if (which == "friction")
+        friction<2>(checker);
+      else if (which == "hertz")
+        hertz(checker, argc > 3 ? argv[3] : "half_disk_2d.msh");
       else
         resting<2>(checker);
     },
-    [](const std::string &which, Checker &checker) {
+    [&](const std::string &which, Checker &checker) {
       if (which == "fd")
         fd<3>(checker);
       else if (which == "drop")
         drop<3>(checker);
+      else if (which == "compression")
+        compression<3>(checker);
+      else if (which == "friction")
+        friction<3>(checker);
       else
         resting<3>(checker);
     });

@@ -50,8 +50,7 @@ namespace hyperelastic
     /// Completes the system with the operator and the driver, which must
     /// outlive it.
     void
-    attach(const ElasticityOperator<dim> &elasticity,
-           TimeStepping<dim>             &stepping);
+    attach(ElasticityOperator<dim> &elasticity, TimeStepping<dim> &stepping);
 
     /// The homogeneous Dirichlet constraints (the free dofs).
     const dealii::AffineConstraints<double> &
@@ -129,6 +128,8 @@ namespace hyperelastic
     solution_scale() const override;
     void
     verify_converged_state() override;
+    bool
+    update_lagged_quantities() override;
 
     // SteppedSystem
     void
@@ -145,11 +146,11 @@ namespace hyperelastic
     double
     free_residual_norm(double &noise);
 
-    const Parts                    parts;
-    const MPI_Comm                 comm;
-    dealii::IndexSet               owned_dofs, relevant_dofs;
-    const ElasticityOperator<dim> *elasticity = nullptr;
-    TimeStepping<dim>             *stepping   = nullptr;
+    const Parts              parts;
+    const MPI_Comm           comm;
+    dealii::IndexSet         owned_dofs, relevant_dofs;
+    ElasticityOperator<dim> *elasticity = nullptr;
+    TimeStepping<dim>       *stepping   = nullptr;
 
     /// Dirichlet constraints: with the increment to the prescribed values
     /// (first iteration of a load step) and homogeneous (later iterations);

@@ -31,12 +31,23 @@ namespace hyperelastic
       "stress per length. 0: automatic, (lambda + 2 mu) / d_hat from the "
       "material's small-strain moduli (a contact pressure of the order of "
       "the modulus at gaps of the order of d_hat).");
-    prm.declare_entry("Friction smoothing",
-                      "0",
-                      Double(0.),
-                      "eps of the smoothed Coulomb friction (a slip below it "
-                      "sticks elastically). 0: automatic. Friction is not "
-                      "available yet: every 'Friction coefficient' must be 0.");
+    prm.declare_entry(
+      "Friction smoothing",
+      "0",
+      Double(0.),
+      "The smoothing of Coulomb friction: a slip below eps sticks elastically "
+      "(the friction force grows from 0 to mu times the normal force over "
+      "it), above it the contact slides. Quasi-static: eps is a slip length "
+      "per load step (0: d_hat / 10). Dynamics: it is eps_v, a slip "
+      "velocity, and eps = eps_v h (0: eps_v = d_hat per unit time).");
+    prm.declare_entry(
+      "Friction lagging updates",
+      "4",
+      Integer(0),
+      "How many times a step is solved again with friction's normal forces "
+      "and tangent directions taken from its converged state (they start "
+      "from the last step's); it stops earlier once no normal force changes "
+      "by more than 1e-3 of the largest. 0: the last step's values only.");
     for (unsigned int k = 1; k <= max_obstacles; ++k)
       {
         prm.enter_subsection("Obstacle " + std::to_string(k));
@@ -45,8 +56,8 @@ namespace hyperelastic
                           Selection("none|plane|sphere|mesh"),
                           "A rigid obstacle: 'plane' (the body stays on the "
                           "side its normal points to), 'sphere' (the body "
-                          "stays outside it), 'mesh' (a gmsh surface; not "
-                          "available yet), or 'none'.");
+                          "stays outside it), 'mesh' (a rigid surface from a "
+                          "gmsh file, see File), or 'none'.");
         prm.declare_entry("Point",
                           "0, 0, 0",
                           List(Double()),
@@ -61,8 +72,10 @@ namespace hyperelastic
         prm.declare_entry("File",
                           "",
                           Anything(),
-                          "mesh: gmsh file of the obstacle's surface (not "
-                          "available yet).");
+                          "mesh: the gmsh file of the obstacle's surface "
+                          "(lines in 2D, triangles in 3D; a relative path is "
+                          "read relative to the folder of the scene file). "
+                          "The body must start outside it.");
         prm.declare_entry("Motion",
                           "0; 0; 0",
                           Anything(),
@@ -73,19 +86,21 @@ namespace hyperelastic
                           "0",
                           Double(0.),
                           "Coulomb's mu between the body and this obstacle "
-                          "(0: frictionless; friction is not available yet).");
+                          "(0: frictionless).");
         prm.leave_subsection();
       }
     prm.leave_subsection();
   }
 
   void
-  ContactParameters::parse(ParameterHandler &prm)
+  ContactParameters::parse(ParameterHandler  &prm,
+                           const std::string &scene_folder)
   {
     prm.enter_subsection("Contact");
-    barrier_distance   = get_finite(prm, "Contact", "Barrier distance");
-    barrier_stiffness  = get_finite(prm, "Contact", "Barrier stiffness");
-    friction_smoothing = get_finite(prm, "Contact", "Friction smoothing");
+    barrier_distance         = get_finite(prm, "Contact", "Barrier distance");
+    barrier_stiffness        = get_finite(prm, "Contact", "Barrier stiffness");
+    friction_smoothing       = get_finite(prm, "Contact", "Friction smoothing");
+    friction_lagging_updates = prm.get_integer("Friction lagging updates");
     obstacles.clear();
     for (unsigned int k = 1; k <= max_obstacles; ++k)
       {
@@ -112,15 +127,16 @@ namespace hyperelastic
         prm.leave_subsection();
         if (o.type == ObstacleType::none)
           continue;
+        o.file = dealii::Utilities::trim(o.file);
         if (o.type == ObstacleType::mesh)
-          reject(o.subsection + "/Type",
-                 "mesh",
-                 "meshed obstacles are not available yet; use 'plane' or "
-                 "'sphere'");
-        if (o.friction != 0.)
-          reject(o.subsection + "/Friction coefficient",
-                 prm.get("Friction coefficient"),
-                 "friction is not available yet: set it to 0");
+          {
+            if (o.file.empty())
+              reject(o.subsection + "/File",
+                     "",
+                     "a meshed obstacle needs the gmsh file of its surface");
+            if (o.file[0] != '/')
+              o.file = scene_folder + "/" + o.file;
+          }
         if (o.type == ObstacleType::sphere && !(o.radius > 0.))
           reject(o.subsection + "/Radius",
                  std::to_string(o.radius),

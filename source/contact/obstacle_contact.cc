@@ -1,10 +1,12 @@
-// The barrier contact of boundary vertices with rigid planes and spheres.
+// The barrier contact and lagged friction of boundary vertices with rigid
+// planes and spheres.
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/contact/barrier.h>
+#include <hyperelastic/contact/friction.h>
 #include <hyperelastic/contact/obstacle_contact.h>
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/materials/tangent_projection.h>
@@ -41,15 +43,23 @@ namespace hyperelastic
     const ContactParameters             &parameters,
     const std::map<std::string, double> &constants,
     const DoFHandler<dim>               &dof_handler,
-    const Mapping<dim>                  &mapping,
-    const LameParameters                &moduli)
+    const LameParameters                &moduli,
+    const bool                           dynamic)
       : obstacles(parameters.obstacles)
       , comm(dof_handler.get_communicator())
+      , dynamic(dynamic)
+      , max_lagging_updates(parameters.friction_lagging_updates)
   {
     for (const auto &o : obstacles)
-      motions.push_back(parse_vector_function<dim>(o.motion,
-                                                   constants,
-                                                   o.subsection + "/Motion"));
+      {
+        motions.push_back(parse_vector_function<dim>(o.motion,
+                                                     constants,
+                                                     o.subsection + "/Motion"));
+        surfaces.push_back(o.type == ObstacleType::mesh
+                             ? std::make_shared<const ObstacleSurface<dim>>(
+                                 o.file, o.subsection + "/File")
+                             : nullptr);
+      }
 
     // The boundary vertices whose dofs this rank owns (ghost cells too: an
     // owned vertex may lie only on a neighbour's boundary face); the faces
@@ -121,19 +131,25 @@ namespace hyperelastic
     kappa       = parameters.barrier_stiffness > 0.
                     ? parameters.barrier_stiffness
                     : (moduli.lambda + 2. * moduli.mu) / d_hat_value;
-    (void)mapping;
+    // Friction's smoothing: a slip length per step (quasi-static) or a slip
+    // velocity (dynamics).
+    eps_setting = parameters.friction_smoothing > 0.
+                    ? parameters.friction_smoothing
+                    : (dynamic ? d_hat_value : 0.1 * d_hat_value);
 
     // The start must be feasible.
-    std::string problem;
+    std::string               problem;
+    const std::vector<Placed> start = placed(0.);
     for (const Vertex &v : vertices)
       {
         for (unsigned int k = 0; k < obstacles.size() && problem.empty(); ++k)
-          if (!(distance(k, v.X, 0.) > 0.))
+          if (!(distance(start[k], v.X, d_hat_value) > 0.))
             {
               std::ostringstream s;
               s << "the body starts on the wrong side of the obstacle of '"
                 << obstacles[k].subsection << "': the boundary vertex at ("
-                << v.X << ") has distance " << distance(k, v.X, 0.)
+                << v.X << ") has distance "
+                << distance(start[k], v.X, d_hat_value)
                 << " (must be positive at t = 0)";
               problem = s.str();
             }
@@ -151,38 +167,68 @@ namespace hyperelastic
   ObstacleContact<dim>::~ObstacleContact() = default;
 
   template <int dim>
-  Tensor<1, dim>
-  ObstacleContact<dim>::offset(const unsigned int k, const double t) const
+  bool
+  ObstacleContact<dim>::has_friction() const
   {
-    motions[k]->set_time(t);
-    Tensor<1, dim> w;
-    for (unsigned int d = 0; d < dim; ++d)
-      w[d] = motions[k]->value(Point<dim>(), d);
-    return w;
+    return std::any_of(obstacles.begin(), obstacles.end(), [](const auto &o) {
+      return o.friction > 0.;
+    });
+  }
+
+  template <int dim>
+  std::vector<typename ObstacleContact<dim>::Placed>
+  ObstacleContact<dim>::placed(const double time) const
+  {
+    std::vector<Placed> result(obstacles.size());
+    const auto          offset = [&](const unsigned int k, const double t) {
+      motions[k]->set_time(t);
+      Tensor<1, dim> w;
+      for (unsigned int d = 0; d < dim; ++d)
+        w[d] = motions[k]->value(Point<dim>(), d);
+      return w;
+    };
+    for (unsigned int k = 0; k < obstacles.size(); ++k)
+      {
+        const ObstacleParameters &o = obstacles[k];
+        Placed                   &p = result[k];
+        const Tensor<1, dim>      w = offset(k, time);
+        p.type                      = o.type;
+        p.point                     = to_point<dim>(o.point) + w;
+        if (o.type == ObstacleType::plane)
+          p.normal = to_point<dim>(o.normal);
+        p.radius   = o.radius;
+        p.friction = o.friction;
+        p.surface  = surfaces[k].get();
+        if (std::isfinite(reached) && o.friction > 0.)
+          p.shift = w - offset(k, step_start);
+      }
+    return result;
   }
 
   template <int dim>
   double
-  ObstacleContact<dim>::distance(const unsigned int k,
-                                 const Point<dim>  &x,
-                                 const double       t,
-                                 Tensor<1, dim>    *gradient,
-                                 Tensor<2, dim>    *hessian) const
+  ObstacleContact<dim>::distance(const Placed     &o,
+                                 const Point<dim> &x,
+                                 const double      reach,
+                                 Tensor<1, dim>   *gradient,
+                                 Tensor<2, dim>   *hessian)
   {
-    const ObstacleParameters &o = obstacles[k];
-    const Point<dim>          p = to_point<dim>(o.point) + offset(k, t);
+    if (o.type == ObstacleType::mesh)
+      return o.surface->distance(Point<dim>(x - o.point),
+                                 reach,
+                                 gradient,
+                                 hessian);
     if (o.type == ObstacleType::plane)
       {
-        const Tensor<1, dim> n = to_point<dim>(o.normal);
         if (gradient)
-          *gradient = n;
+          *gradient = o.normal;
         if (hessian)
           *hessian = Tensor<2, dim>();
-        return n * (x - p);
+        return o.normal * (x - o.point);
       }
     // Sphere: d = |x - c| - R, grad d = e = (x - c)/r,
     // d2 d = (I - e e^T) / r.
-    const Tensor<1, dim> r_vector = x - p;
+    const Tensor<1, dim> r_vector = x - o.point;
     const double         r        = r_vector.norm();
     const Tensor<1, dim> e        = r_vector / r;
     if (gradient)
@@ -203,38 +249,106 @@ namespace hyperelastic
   }
 
   template <int dim>
+  typename ObstacleContact<dim>::PairState
+  ObstacleContact<dim>::pair(const unsigned int a,
+                             const unsigned int k,
+                             const Point<dim>  &x,
+                             const Placed      &o,
+                             const double       eps,
+                             const bool         with_stiffness) const
+  {
+    PairState      state;
+    Tensor<1, dim> n;
+    Tensor<2, dim> H;
+    state.distance =
+      distance(o, x, d_hat_value, &n, with_stiffness ? &H : nullptr);
+    const double d = state.distance;
+    if (!(d > 0.))
+      return state;
+    if (d < d_hat_value)
+      {
+        state.active    = true;
+        const Barrier b = barrier(d, d_hat_value);
+        const double  w = kappa * vertices[a].area;
+        state.energy    = w * b.value;
+        // g = -dV/dx = -w b'(d) grad d (b' < 0: away from the obstacle).
+        state.force = -w * b.derivative * n;
+        if (with_stiffness)
+          {
+            // d2V/dx2 = w (b'' n n^T + b' d2d), projected: b'' > 0 along
+            // n; the sphere's tangential curvature term b'/r < 0 is dropped
+            // (its eigenvalue is negative).
+            SymmetricTensor<2, dim> K;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = i; j < dim; ++j)
+                K[i][j] = w * (b.second * n[i] * n[j] + b.derivative * H[i][j]);
+            for (const auto &[value, vector] : eigenvectors(K))
+              if (value > 0.)
+                state.stiffness +=
+                  value * symmetrize(outer_product(vector, vector));
+          }
+      }
+    if (lagged.empty() || !(o.friction > 0.))
+      return state;
+    const Lagged &l = lagged[a * obstacles.size() + k];
+    if (!(l.normal_force > 0.))
+      return state;
+    // The slip of the step relative to the obstacle, in the lagged tangent
+    // plane.
+    const Tensor<1, dim> s =
+      l.tangent_projection * (x - start_positions[a] - o.shift);
+    const SmoothedFriction f  = smoothed_friction(s.norm(), eps);
+    const double           ml = o.friction * l.normal_force;
+    state.energy += ml * f.f0;
+    state.force -= ml * f.f1_over_y * s;
+    if (with_stiffness)
+      state.stiffness += ml * (f.f1_over_y * l.tangent_projection +
+                               f.c * symmetrize(outer_product(s, s)));
+    return state;
+  }
+
+  template <int dim>
+  template <typename F>
+  bool
+  ObstacleContact<dim>::for_each_pair(const VectorType &u,
+                                      const double      t,
+                                      const bool        with_stiffness,
+                                      const F          &f) const
+  {
+    const std::vector<Placed> where = placed(obstacle_time(t));
+    const double eps     = friction_smoothing(t - std::min(step_start, t));
+    bool         crossed = false;
+    for (unsigned int a = 0; a < vertices.size(); ++a)
+      {
+        const Point<dim> x = position(vertices[a], u);
+        for (unsigned int k = 0; k < obstacles.size(); ++k)
+          {
+            const PairState p = pair(a, k, x, where[k], eps, with_stiffness);
+            crossed           = crossed || !(p.distance > 0.);
+            f(a, k, p);
+          }
+      }
+    return crossed;
+  }
+
+  template <int dim>
   void
   ObstacleContact<dim>::contact_forces(const VectorType &u,
                                        const double      t,
                                        VectorType       &forces) const
   {
-    bool                                 crossed = false;
     std::vector<types::global_dof_index> rows;
     std::vector<double>                  values;
-    for (const Vertex &v : vertices)
-      {
-        const Point<dim> x = position(v, u);
-        for (unsigned int k = 0; k < obstacles.size(); ++k)
+    const bool                           crossed = for_each_pair(
+      u, t, false, [&](const unsigned int a, unsigned int, const PairState &p) {
+        if (p.force.norm_square() == 0.)
+          return;
+        for (unsigned int c = 0; c < dim; ++c)
           {
-            Tensor<1, dim> n;
-            const double   d = distance(k, x, t, &n);
-            if (d >= d_hat_value)
-              continue;
-            if (!(d > 0.))
-              {
-                crossed = true;
-                continue;
-              }
-            // g = -dV/dx = -kappa b'(d) grad d (b' < 0: away from it).
-            const Tensor<1, dim> g =
-              -kappa * v.area * barrier(d, d_hat_value).derivative * n;
-            for (unsigned int c = 0; c < dim; ++c)
-              {
-                rows.push_back(v.dofs[c]);
-                values.push_back(g[c]);
-              }
+            rows.push_back(vertices[a].dofs[c]);
+            values.push_back(p.force[c]);
           }
-      }
+      });
     // On every rank, even without contact: the first add after an insert
     // makes Trilinos assemble the vector, a collective operation.
     forces.add(rows, values);
@@ -252,6 +366,7 @@ namespace hyperelastic
                                    const double      t,
                                    VectorType       &forces) const
   {
+    const auto scope = timed();
     contact_forces(u, t, forces);
   }
 
@@ -264,61 +379,63 @@ namespace hyperelastic
     MatrixType                      &matrix,
     VectorType                      &rhs) const
   {
+    const auto scope = timed();
+    // While the obstacles are on their way (Placed at obstacle_time(t)),
+    // the linearization carries the rest of their motion w_k: the pair's
+    // forces depend on x - w, so the right-hand side gains K w on the
+    // pair's rows (the obstacle drags the vertices it touches).
+    std::vector<Tensor<1, dim>> rest(obstacles.size());
+    if (reached < t)
+      {
+        const std::vector<Placed> now = placed(reached), end = placed(t);
+        for (unsigned int k = 0; k < obstacles.size(); ++k)
+          rest[k] = end[k].point - now[k].point;
+      }
     FullMatrix<double>                   block(dim, dim);
     std::vector<types::global_dof_index> dofs(dim);
+    std::vector<types::global_dof_index> drag_rows;
+    std::vector<double>                  drag;
     // The right-hand side's switch to adding, on every rank (collective in
     // Trilinos); add_condensed then adds on the ranks with contact only.
     rhs.add(std::vector<types::global_dof_index>(), std::vector<double>());
-    for (const Vertex &v : vertices)
-      {
-        const Point<dim> x = position(v, u);
-        for (unsigned int k = 0; k < obstacles.size(); ++k)
-          {
-            Tensor<1, dim> n;
-            Tensor<2, dim> H;
-            const double   d = distance(k, x, t, &n, &H);
-            if (!(d < d_hat_value) || !(d > 0.))
-              continue;
-            const Barrier b = barrier(d, d_hat_value);
-            // d2V/dx2 = kappa (b'' n n^T + b' d2d), projected: b'' > 0
-            // along n; the sphere's tangential curvature term b'/r < 0 is
-            // dropped (its eigenvalue is negative).
-            SymmetricTensor<2, dim> K;
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = i; j < dim; ++j)
-                K[i][j] = kappa * v.area *
-                          (b.second * n[i] * n[j] + b.derivative * H[i][j]);
-            const auto              eigen = eigenvectors(K);
-            SymmetricTensor<2, dim> P;
-            for (const auto &[value, vector] : eigen)
-              if (value > 0.)
-                P += value * symmetrize(outer_product(vector, vector));
-            for (unsigned int i = 0; i < dim; ++i)
-              {
-                dofs[i] = v.dofs[i];
-                for (unsigned int j = 0; j < dim; ++j)
-                  block(i, j) = P[i][j];
-              }
-            add_condensed(block, dofs, constraints, matrix, rhs);
-          }
-      }
+    for_each_pair(u,
+                  t,
+                  true,
+                  [&](const unsigned int a,
+                      const unsigned int k,
+                      const PairState   &p) {
+                    if (p.stiffness.norm() == 0.)
+                      return;
+                    for (unsigned int i = 0; i < dim; ++i)
+                      {
+                        dofs[i] = vertices[a].dofs[i];
+                        for (unsigned int j = 0; j < dim; ++j)
+                          block(i, j) = p.stiffness[i][j];
+                      }
+                    add_condensed(block, dofs, constraints, matrix, rhs);
+                    const Tensor<1, dim> pull = p.stiffness * rest[k];
+                    for (unsigned int i = 0; i < dim; ++i)
+                      if (pull[i] != 0. && !constraints.is_constrained(dofs[i]))
+                        {
+                          drag_rows.push_back(dofs[i]);
+                          drag.push_back(pull[i]);
+                        }
+                  });
+    rhs.add(drag_rows, drag);
   }
 
   template <int dim>
   double
   ObstacleContact<dim>::potential(const VectorType &u, const double t) const
   {
-    double sum = 0.;
-    for (const Vertex &v : vertices)
-      {
-        const Point<dim> x = position(v, u);
-        for (unsigned int k = 0; k < obstacles.size(); ++k)
-          {
-            const double d = distance(k, x, t);
-            if (d < d_hat_value)
-              sum += kappa * v.area * barrier(d, d_hat_value).value;
-          }
-      }
+    const auto scope   = timed();
+    double     sum     = 0.;
+    const bool crossed = for_each_pair(
+      u, t, false, [&](unsigned int, unsigned int, const PairState &p) {
+        sum += p.energy;
+      });
+    if (crossed)
+      sum = std::numeric_limits<double>::infinity();
     return Utilities::MPI::sum(sum, comm);
   }
 
@@ -328,35 +445,50 @@ namespace hyperelastic
                                               const VectorType &direction,
                                               const double      t) const
   {
+    const auto scope = timed();
+    // The obstacles move jointly with the body: from where they stand to
+    // their place at t (a straight way in between).
+    const std::vector<Placed> now = placed(obstacle_time(t));
+    std::vector<Placed>       end = now;
+    if (reached < t)
+      end = placed(t);
     double alpha = 1.;
     for (const Vertex &v : vertices)
       {
         const Point<dim> x = position(v, u);
-        Tensor<1, dim>   p;
-        for (unsigned int c = 0; c < dim; ++c)
-          p[c] = direction(v.dofs[c]);
         for (unsigned int k = 0; k < obstacles.size(); ++k)
           {
-            const ObstacleParameters &o  = obstacles[k];
-            const double              d0 = distance(k, x, t);
+            // The vertex's motion relative to the obstacle.
+            Tensor<1, dim> p = now[k].point - end[k].point;
+            for (unsigned int c = 0; c < dim; ++c)
+              p[c] += direction(v.dofs[c]);
+            if (now[k].type == ObstacleType::mesh)
+              {
+                alpha = std::min(
+                  alpha,
+                  now[k].surface->largest_step(Point<dim>(x - now[k].point),
+                                               p,
+                                               1. - feasible_fraction));
+                continue;
+              }
+            const double d0 = distance(now[k], x, d_hat_value);
             if (!(d0 > 0.))
               continue; // the forces say so
             double hit = std::numeric_limits<double>::infinity();
-            if (o.type == ObstacleType::plane)
+            if (now[k].type == ObstacleType::plane)
               {
-                const double approach = -(to_point<dim>(o.normal) * p);
+                const double approach = -(now[k].normal * p);
                 if (approach > 0.)
                   hit = d0 / approach;
               }
             else
               {
                 // |x - c + s p| = R: a s^2 + 2 b s + c0 = 0, first root > 0.
-                const Tensor<1, dim> r =
-                  x - (to_point<dim>(o.point) + offset(k, t));
-                const double a    = p * p;
-                const double b    = r * p;
-                const double c0   = r * r - o.radius * o.radius;
-                const double disc = b * b - a * c0;
+                const Tensor<1, dim> r  = x - now[k].point;
+                const double         a  = p * p;
+                const double         b  = r * p;
+                const double         c0 = r * r - now[k].radius * now[k].radius;
+                const double         disc = b * b - a * c0;
                 if (a > 0. && b < 0. && disc >= 0.)
                   hit = c0 / (-b + std::sqrt(disc));
               }
@@ -364,6 +496,94 @@ namespace hyperelastic
           }
       }
     return Utilities::MPI::min(alpha, comm);
+  }
+
+  template <int dim>
+  std::vector<typename ObstacleContact<dim>::Lagged>
+  ObstacleContact<dim>::lagged_at(const VectorType &u, const double time) const
+  {
+    std::vector<Lagged> result(vertices.size() * obstacles.size());
+    if (!has_friction())
+      return result;
+    const std::vector<Placed> where = placed(time);
+    for (unsigned int a = 0; a < vertices.size(); ++a)
+      {
+        const Point<dim> x = position(vertices[a], u);
+        for (unsigned int k = 0; k < obstacles.size(); ++k)
+          {
+            Tensor<1, dim> n;
+            const double   d = distance(where[k], x, d_hat_value, &n);
+            if (!(d > 0.) || !(d < d_hat_value) ||
+                !(obstacles[k].friction > 0.))
+              continue;
+            Lagged &l = result[a * obstacles.size() + k];
+            l.normal_force =
+              -kappa * vertices[a].area * barrier(d, d_hat_value).derivative;
+            l.tangent_projection =
+              unit_symmetric_tensor<dim>() - symmetrize(outer_product(n, n));
+          }
+      }
+    return result;
+  }
+
+  template <int dim>
+  void
+  ObstacleContact<dim>::begin_step(const VectorType &u, const double t_start)
+  {
+    step_start      = t_start;
+    reached         = t_start;
+    lagging_updates = 0;
+    start_positions.resize(vertices.size());
+    for (unsigned int a = 0; a < vertices.size(); ++a)
+      start_positions[a] = position(vertices[a], u);
+    lagged = lagged_at(u, t_start);
+  }
+
+  template <int dim>
+  bool
+  ObstacleContact<dim>::moving(const double t)
+  {
+    if (!(reached < t))
+      return false;
+    const std::vector<Placed> now = placed(reached), end = placed(t);
+    for (unsigned int k = 0; k < obstacles.size(); ++k)
+      if (now[k].point != end[k].point)
+        return true;
+    // Standing still: nothing to carry.
+    reached = t;
+    return false;
+  }
+
+  template <int dim>
+  void
+  ObstacleContact<dim>::advance(const double alpha, const double t)
+  {
+    if (reached < t)
+      reached = alpha >= 1. ? t : reached + alpha * (t - reached);
+  }
+
+  template <int dim>
+  bool
+  ObstacleContact<dim>::update_lagged(const VectorType &u, const double t)
+  {
+    if (!has_friction() || lagging_updates >= max_lagging_updates)
+      return false;
+    std::vector<Lagged> next   = lagged_at(u, obstacle_time(t));
+    double              change = 0., largest = 0.;
+    for (unsigned int i = 0; i < next.size(); ++i)
+      {
+        change =
+          std::max(change,
+                   std::abs(next[i].normal_force - lagged[i].normal_force));
+        largest = std::max(largest, next[i].normal_force);
+      }
+    change  = Utilities::MPI::max(change, comm);
+    largest = Utilities::MPI::max(largest, comm);
+    if (!(change > 1e-3 * largest))
+      return false;
+    lagged = std::move(next);
+    ++lagging_updates;
+    return true;
   }
 
   template <int dim>
@@ -376,22 +596,14 @@ namespace hyperelastic
     std::vector<Tensor<1, dim>> force(obstacles.size());
     double       min_distance = std::numeric_limits<double>::infinity();
     unsigned int active       = 0;
-    for (const Vertex &v : vertices)
-      {
-        const Point<dim> x = position(v, u);
-        for (unsigned int k = 0; k < obstacles.size(); ++k)
-          {
-            Tensor<1, dim> n;
-            const double   d = distance(k, x, t, &n);
-            min_distance     = std::min(min_distance, d);
-            if (d < d_hat_value && d > 0.)
-              {
-                ++active;
-                force[k] -=
-                  kappa * v.area * barrier(d, d_hat_value).derivative * n;
-              }
-          }
-      }
+    for_each_pair(u,
+                  t,
+                  false,
+                  [&](unsigned int, const unsigned int k, const PairState &p) {
+                    min_distance = std::min(min_distance, p.distance);
+                    active += p.active ? 1 : 0;
+                    force[k] += p.force;
+                  });
     for (unsigned int k = 0; k < obstacles.size(); ++k)
       {
         const Tensor<1, dim> total = Utilities::MPI::sum(force[k], comm);

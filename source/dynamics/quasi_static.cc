@@ -2,6 +2,8 @@
 // predictor.
 #include <hyperelastic/dynamics/quasi_static.h>
 
+#include <algorithm>
+
 namespace hyperelastic
 {
   template <int dim>
@@ -50,15 +52,24 @@ namespace hyperelastic
     // imposes whatever of them is still missing.
     last_increment = converged.u;
     last_increment -= previous.u;
+    last_increment *= (t - converged.load_factor) / increment;
+    // Obstacles move with the prediction, from their place at t_n to the
+    // one at t: a prediction that would cross one is shortened (and the
+    // obstacles stop as far along their way).
+    const double feasible = std::min(
+      1.,
+      context.elasticity.largest_feasible_step(converged.u, last_increment, t));
     u = converged.u;
-    u.add((t - converged.load_factor) / increment, last_increment);
+    u.add(feasible, last_increment);
     u_ghosted = u;
-    if (!(context.elasticity.evaluate(u_ghosted, t, false).min_J > 0.))
+    if (!(feasible > 0.) ||
+        !(context.elasticity.evaluate(u_ghosted, t, false).min_J > 0.))
       {
         u         = converged.u;
         u_ghosted = u;
         return;
       }
+    context.elasticity.advance(feasible, t);
     ++predictions;
   }
 

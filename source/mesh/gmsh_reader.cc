@@ -230,14 +230,13 @@ namespace hyperelastic
 
     /// The whole file, or InputError.
     std::string
-    read_file(const std::string &file_name)
+    read_file(const std::string &file_name, const std::string &entry)
     {
       std::ifstream   in(file_name, std::ios::binary);
       std::error_code error;
       if (!in || !std::filesystem::is_regular_file(file_name, error))
-        throw InputError("cannot open mesh file '" + file_name +
-                         "' (Mesh/File)" +
-                         (in ? ": it is not a regular file" : ""));
+        throw InputError("cannot open mesh file '" + file_name + "' (" + entry +
+                         ")" + (in ? ": it is not a regular file" : ""));
       in.seekg(0, std::ios::end);
       const std::streamoff size = in.tellg();
       in.seekg(0);
@@ -250,9 +249,11 @@ namespace hyperelastic
 
   template <int dim>
   GmshMesh<dim>
-  read_gmsh(const std::string &file_name)
+  read_gmsh(const std::string &file_name,
+            const std::string &entry,
+            const bool         cells_required)
   {
-    GmshText in(read_file(file_name), file_name);
+    GmshText in(read_file(file_name, entry), file_name);
 
     // gmsh element types: 2 is the 3-node triangle, 4 the 4-node tet.
     const int     simplex_type = dim == 2 ? 2 : 4;
@@ -512,7 +513,7 @@ namespace hyperelastic
         " and points for boundary ids): mesh with simplices, first order "
         "(gmsh: no Recombine, Mesh.ElementOrder = 1), and check "
         "'Problem/Dimension'");
-    if (mesh.cells.empty())
+    if (mesh.cells.empty() && cells_required)
       throw InputError("mesh file '" + file_name + "' holds no " +
                        (dim == 2 ? "3-node triangles" : "4-node tetrahedra") +
                        " (gmsh element type " + std::to_string(simplex_type) +
@@ -543,7 +544,7 @@ namespace hyperelastic
   }
 
   template GmshMesh<2>
-  read_gmsh<2>(const std::string &);
+  read_gmsh<2>(const std::string &, const std::string &, bool);
   template GmshMesh<3>
-  read_gmsh<3>(const std::string &);
+  read_gmsh<3>(const std::string &, const std::string &, bool);
 } // namespace hyperelastic

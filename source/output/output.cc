@@ -64,7 +64,7 @@ namespace hyperelastic
                                   const Mapping<dim>    &mapping,
                                   const TrilinosWrappers::MPI::Vector &u,
                                   const CellFields                    &fields,
-                                  const TrilinosWrappers::MPI::Vector *velocity)
+                                  const std::vector<NodalField>       &nodal)
   {
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
@@ -83,11 +83,15 @@ namespace hyperelastic
                              field_names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
-    if (velocity)
+    for (const NodalField &field : nodal)
       {
-        std::vector<std::string> velocity_names(dim, "velocity");
-        data_out.add_data_vector(*velocity,
-                                 velocity_names,
+        // A vector on the displacement dofs (the mixed formulation's
+        // pressure dofs carry a zero scalar '<name>_p').
+        std::vector<std::string> names(dim, field.name);
+        if (dof_handler.get_fe().n_components() > dim)
+          names.push_back(field.name + "_p");
+        data_out.add_data_vector(*field.values,
+                                 names,
                                  DataOut<dim>::type_dof_data,
                                  interpretation);
       }

@@ -214,7 +214,11 @@ namespace hyperelastic
     TrialPoint current; // the current iterate, energy unknown yet
     // The residual the convergence test asks for (from the last iteration).
     double target = 0.;
-    for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
+    // Each solve of the (lagged) equations has the full iteration budget;
+    // the table counts on through them.
+    unsigned int budget_start = 0;
+    for (unsigned int it = 1; it - budget_start <= parameters.max_iterations;
+         ++it)
       {
         const bool fallback =
           parameters.tangent == NewtonTangent::exact_then_projected;
@@ -304,6 +308,16 @@ namespace hyperelastic
         if (!moving_constraints &&
             ((residual_small && update_small) || linear_done))
           {
+            if (system.update_lagged_quantities())
+              {
+                // The equations changed (lagged friction): their energy at
+                // the current iterate is new.
+                current      = TrialPoint();
+                budget_start = it;
+                if (verbose)
+                  pcout << "   (lagged quantities updated)" << std::endl;
+                continue;
+              }
             system.verify_converged_state();
             return result;
           }

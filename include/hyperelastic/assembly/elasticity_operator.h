@@ -111,6 +111,37 @@ namespace hyperelastic
       return alpha;
     }
 
+    /// The load terms' step hooks (LoadTerm::begin_step, moving, advance,
+    /// update_lagged), each over all terms. Collective.
+    void
+    begin_step(const VectorType &u, const double t_start)
+    {
+      for (const auto &term : terms)
+        term->begin_step(u, t_start);
+    }
+    bool
+    moving(const double t)
+    {
+      bool any = false;
+      for (const auto &term : terms)
+        any = term->moving(t) || any;
+      return any;
+    }
+    void
+    advance(const double alpha, const double t)
+    {
+      for (const auto &term : terms)
+        term->advance(alpha, t);
+    }
+    bool
+    update_lagged(const VectorType &u, const double t)
+    {
+      bool any = false;
+      for (const auto &term : terms)
+        any = term->update_lagged(u, t) || any;
+      return any;
+    }
+
     /// Total potential energy alone (collective).
     double
     total_energy(const VectorType &u, const double t) const

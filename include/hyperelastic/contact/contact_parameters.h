@@ -42,10 +42,12 @@ namespace hyperelastic
     static constexpr unsigned int max_obstacles = 4;
     /// d_hat; 0: automatic (1e-3 of the mesh's bounding-box diagonal).
     double barrier_distance = 0.;
-    /// kappa; 0: automatic (from the material's stiffness and the boundary
-    /// vertices' spacing).
-    double barrier_stiffness  = 0.;
-    double friction_smoothing = 0.;
+    /// kappa; 0: automatic ((lambda + 2 mu) / d_hat).
+    double barrier_stiffness = 0.;
+    /// eps (quasi-static, a slip length) or eps_v (dynamics, a slip
+    /// velocity); 0: automatic.
+    double       friction_smoothing       = 0.;
+    unsigned int friction_lagging_updates = 4;
     /// The obstacles whose Type is not none, in the order of their sections.
     std::vector<ObstacleParameters> obstacles;
 
@@ -57,8 +59,9 @@ namespace hyperelastic
 
     static void
     declare(ParameterHandler &prm);
+    /// Relative obstacle files are read from @p scene_folder.
     void
-    parse(ParameterHandler &prm);
+    parse(ParameterHandler &prm, const std::string &scene_folder);
     /// The checks that need the dimension (number of coordinates and
     /// expressions; a 2D scene may leave a third coordinate at 0).
     void

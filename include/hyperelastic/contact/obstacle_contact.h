@@ -1,34 +1,54 @@
 // Contact of the body's boundary vertices with rigid obstacles (planes and
-// spheres, moving as expressions of t) through the IPC barrier
-//   V(u, t) = kappa sum over boundary vertices a and obstacles k of
-//             A_a b(d_k(X_a + u_a, t), d_hat),
-// A_a the vertex's share of the boundary's area (2D: length),
-// as one load term: forces g = -dV/du, load stiffness d2V/du2 (each vertex's
-// dim x dim block projected to positive semi-definite), potential V. Its
-// largest feasible step keeps every distance above a tenth of its value along
-// a Newton direction (closed form for planes and spheres), so no iterate
-// crosses an obstacle.
+// spheres, moving as expressions of t) through the IPC barrier and lagged,
+// smoothed Coulomb friction:
+//   V(u, t) = sum over boundary vertices a and obstacles k of
+//             kappa A_a b(d_k(x_a, t), d_hat)
+//           + mu_k lambda_ak f0(|s_ak|, eps),
+// A_a the vertex's share of the boundary's area (2D: length), x_a = X_a +
+// u_a, lambda_ak the pair's normal force and P_ak the projection on its
+// tangent plane, both lagged (taken at the step's start, then at its
+// converged state for 'Friction lagging updates' more solves), s_ak =
+// P_ak (x_a - x_a(step start) - obstacle's displacement since then) the
+// slip of the step, f0 the smoothed |s| (f0' = f1, f1 = 1 beyond eps).
+// One load term: forces g = -dV/du, load stiffness d2V/du2 (each pair's
+// dim x dim block positive semi-definite: the barrier's projected, the
+// friction's by construction), potential V.
+//
+// Feasibility: the largest feasible step keeps every distance above a tenth
+// of its value along a Newton direction (closed form for planes and
+// spheres), so no iterate crosses an obstacle. A moving obstacle does not
+// jump to its place at t when a step begins: it stays where it was, and
+// each Newton iteration carries it (like a prescribed displacement) as far
+// along its way as the feasible step allows, together with the body
+// (LoadTerm::moving/advance); the step converges only once it has arrived.
 //
 // Distances: plane d = n . (x - p(t)), n the unit normal towards the body;
-// sphere d = |x - c(t)| - R (the body outside). Every rank handles the
+// sphere d = |x - c(t)| - R (the body outside); mesh: the distance to the
+// rigid surface (contact/obstacle_surface.h), found through its R-tree, its
+// feasible step by conservative advancement. Every rank handles the
 // boundary vertices whose dofs it owns (P2: the vertices only, not the
 // mid-edge nodes); the answer does not depend on the number of ranks.
 #pragma once
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/mapping.h>
 
 #include <hyperelastic/contact/contact_parameters.h>
+#include <hyperelastic/contact/obstacle_surface.h>
 #include <hyperelastic/loads/load_term.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/output/step_summary.h>
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,11 +62,13 @@ namespace hyperelastic
     /// where the scene gives 0) and checks the start: a vertex on the wrong
     /// side of an obstacle at t = 0 is an InputError naming the obstacle and
     /// the vertex. Collective.
+    /// With @p dynamic, friction's slip is the step's (velocity times h)
+    /// and its smoothing eps_v h.
     ObstacleContact(const ContactParameters             &parameters,
                     const std::map<std::string, double> &constants,
                     const dealii::DoFHandler<dim>       &dof_handler,
-                    const dealii::Mapping<dim>          &mapping,
-                    const LameParameters                &moduli);
+                    const LameParameters                &moduli,
+                    bool                                 dynamic = false);
     ~ObstacleContact() override;
 
     std::string
@@ -85,10 +107,21 @@ namespace hyperelastic
     double
     potential(const VectorType &u, double t) const override;
 
+    /// Along @p direction with the obstacles moving jointly from where
+    /// they are to their place at @p t.
     double
     largest_feasible_step(const VectorType &u,
                           const VectorType &direction,
                           double            t) const override;
+
+    void
+    begin_step(const VectorType &u, double t_start) override;
+    bool
+    moving(double t) override;
+    void
+    advance(double alpha, double t) override;
+    bool
+    update_lagged(const VectorType &u, double t) override;
 
     /// The CSV columns contact_force_<k>_<axis> (the force obstacle k
     /// exerts on the body), contact_min_distance and contact_active_pairs
@@ -96,7 +129,8 @@ namespace hyperelastic
     void
     summarize(const VectorType &u, double t, StepSummary<dim> &summary) const;
 
-    /// The nodal contact forces on the body at @p u (owned entries).
+    /// The nodal contact forces on the body at @p u (owned entries;
+    /// barrier and friction). Collective.
     void
     contact_forces(const VectorType &u, double t, VectorType &forces) const;
 
@@ -112,6 +146,25 @@ namespace hyperelastic
       return kappa;
     }
 
+    /// eps of the friction of a step of length @p h (dynamics: eps_v h).
+    double
+    friction_smoothing(double h) const
+    {
+      return dynamic ? eps_setting * h : eps_setting;
+    }
+
+    /// Whether any obstacle has friction.
+    bool
+    has_friction() const;
+
+    /// Times the term's work (forces, stiffness, potential, feasible step)
+    /// in the section "contact" of @p timer, which must outlive the term.
+    void
+    set_timer(dealii::TimerOutput &timer)
+    {
+      this->timer = &timer;
+    }
+
   private:
     /// One boundary vertex: its reference position and its dofs.
     struct Vertex
@@ -124,26 +177,119 @@ namespace hyperelastic
       double area = 0.;
     };
 
-    /// Distance of @p x to obstacle @p k at @p t, its gradient and Hessian.
-    double
-    distance(unsigned int              k,
+    /// An obstacle where it stands at one time.
+    struct Placed
+    {
+      ObstacleType type = ObstacleType::plane;
+      /// plane: on it; sphere: centre; mesh: the origin of the file's
+      /// coordinates
+      dealii::Point<dim>          point;
+      const ObstacleSurface<dim> *surface = nullptr; ///< mesh
+      dealii::Tensor<1, dim>      normal;
+      double                      radius   = 0.;
+      double                      friction = 0.;
+      /// Its displacement since the step began (friction's reference).
+      dealii::Tensor<1, dim> shift;
+    };
+
+    /// The obstacles at obstacle time @p time.
+    std::vector<Placed>
+    placed(double time) const;
+
+    /// Distance of @p x to @p o, its gradient and Hessian (a meshed
+    /// obstacle: up to @p reach, beyond it @p reach and zero derivatives).
+    static double
+    distance(const Placed             &o,
              const dealii::Point<dim> &x,
-             double                    t,
+             double                    reach,
              dealii::Tensor<1, dim>   *gradient = nullptr,
-             dealii::Tensor<2, dim>   *hessian  = nullptr) const;
+             dealii::Tensor<2, dim>   *hessian  = nullptr);
+
+    /// Friction's lagged quantities of a vertex-obstacle pair.
+    struct Lagged
+    {
+      double                          normal_force = 0.; ///< lambda
+      dealii::SymmetricTensor<2, dim> tangent_projection;
+    };
+
+    /// A pair's share of V, its force on the body and its stiffness.
+    struct PairState
+    {
+      double                          distance = 0.;
+      bool                            active   = false; ///< d < d_hat
+      double                          energy   = 0.;
+      dealii::Tensor<1, dim>          force;
+      dealii::SymmetricTensor<2, dim> stiffness;
+    };
+
+    /// Vertex @p a at @p x against obstacle @p k placed at @p o; the
+    /// stiffness only if @p with_stiffness. Friction's eps: @p eps.
+    PairState
+    pair(unsigned int              a,
+         unsigned int              k,
+         const dealii::Point<dim> &x,
+         const Placed             &o,
+         double                    eps,
+         bool                      with_stiffness) const;
+
+    /// Calls @p f(a, k, pair) for every vertex a and obstacle k (pairs
+    /// beyond d_hat without friction included, inactive); returns whether
+    /// a distance was not positive.
+    template <typename F>
+    bool
+    for_each_pair(const VectorType &u,
+                  double            t,
+                  bool              with_stiffness,
+                  const F          &f) const;
+
+    /// Friction's lambda and tangent projection of every pair at @p u.
+    std::vector<Lagged>
+    lagged_at(const VectorType &u, double time) const;
 
     dealii::Point<dim>
     position(const Vertex &v, const VectorType &u) const;
 
-    /// The obstacle's displacement at t.
-    dealii::Tensor<1, dim>
-    offset(unsigned int k, double t) const;
+    /// Where the obstacles are evaluated for load factor @p t: at t, or
+    /// where they stand on their way within the step.
+    double
+    obstacle_time(double t) const
+    {
+      return std::min(t, reached);
+    }
 
-    const std::vector<ObstacleParameters>               obstacles;
-    std::vector<std::unique_ptr<dealii::Function<dim>>> motions;
-    const MPI_Comm                                      comm;
-    std::vector<Vertex>                                 vertices;
-    double                                              d_hat_value = 0.;
-    double                                              kappa       = 0.;
+    const std::vector<ObstacleParameters> obstacles;
+    /// The surfaces of the meshed obstacles (null for the others).
+    std::vector<std::shared_ptr<const ObstacleSurface<dim>>> surfaces;
+    std::vector<std::unique_ptr<dealii::Function<dim>>>      motions;
+    const MPI_Comm                                           comm;
+    const bool                                               dynamic;
+    std::vector<Vertex>                                      vertices;
+    double                                                   d_hat_value = 0.;
+    double                                                   kappa       = 0.;
+    /// eps (quasi-static) or eps_v (dynamics).
+    double             eps_setting = 0.;
+    const unsigned int max_lagging_updates;
+
+    /// The step's start, the obstacle time reached within the step (+inf
+    /// outside a step: the obstacles stand at t), the vertices' positions
+    /// at the start, the lagged friction [a * n_obstacles + k] and the
+    /// lagging updates made in this step.
+    double step_start = 0.;
+    double reached    = std::numeric_limits<double>::infinity();
+    std::vector<dealii::Point<dim>> start_positions;
+    std::vector<Lagged>             lagged;
+    unsigned int                    lagging_updates = 0;
+    dealii::TimerOutput            *timer           = nullptr;
+
+    /// A scope of the section "contact" (empty without a timer).
+    std::optional<dealii::TimerOutput::Scope>
+    timed() const
+    {
+      if (timer)
+        return std::optional<dealii::TimerOutput::Scope>(std::in_place,
+                                                         *timer,
+                                                         "contact");
+      return std::nullopt;
+    }
   };
 } // namespace hyperelastic

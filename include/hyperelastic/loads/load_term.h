@@ -83,6 +83,49 @@ namespace hyperelastic
       (void)u, (void)direction, (void)t;
       return 1.;
     }
+
+    // Step state. Terms whose admissible set moves with t (contact: the
+    // obstacles' motion) or that lag quantities behind the iterate (contact:
+    // friction's normal forces and tangents) keep it through these hooks;
+    // the others ignore them.
+
+    /// A step begins from the converged state @p u (owned entries are read)
+    /// at @p t_start. Collective.
+    virtual void
+    begin_step(const VectorType &u, double t_start)
+    {
+      (void)u, (void)t_start;
+    }
+
+    /// Whether the term's admissible set has not reached its place at @p t
+    /// yet (an obstacle on its way within the step). The linearization then
+    /// carries the rest of the motion, the iteration is a predictor (no
+    /// energy test) and largest_feasible_step() bounds the joint motion.
+    /// Collective.
+    virtual bool
+    moving(double t)
+    {
+      (void)t;
+      return false;
+    }
+
+    /// The last direction was taken with step length @p alpha: a moving
+    /// admissible set advances by that fraction of its remaining way to t.
+    virtual void
+    advance(double alpha, double t)
+    {
+      (void)alpha, (void)t;
+    }
+
+    /// At a converged state @p u (ghosted): updates the lagged quantities;
+    /// returns whether they changed enough that the step must be solved
+    /// again. Collective.
+    virtual bool
+    update_lagged(const VectorType &u, double t)
+    {
+      (void)u, (void)t;
+      return false;
+    }
   };
 
   /// Throws InputError on every rank if the load of scene entry @p entry was

@@ -34,7 +34,12 @@ namespace hyperelastic
   /// Reads an ASCII gmsh file, format 1, 2 or 4, as a mesh of triangles
   /// (dim = 2) or tetrahedra (dim = 3). Points, lines and, in 3D,
   /// triangles carry boundary ids; any other element type is an error.
+  /// Errors name the scene entry @p entry. Without @p cells_required a
+  /// file of faces alone (an obstacle's surface: lines in 2D, triangles in
+  /// 3D) is read too.
   template <int dim>
   GmshMesh<dim>
-  read_gmsh(const std::string &file_name);
+  read_gmsh(const std::string &file_name,
+            const std::string &entry          = "Mesh/File",
+            bool               cells_required = true);
 } // namespace hyperelastic

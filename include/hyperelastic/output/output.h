@@ -25,18 +25,24 @@ namespace hyperelastic
     /// Creates the output folder (collective; InputError if impossible).
     OutputWriter(const OutputParameters &parameters, MPI_Comm comm);
 
+    /// A vector field on the nodes besides the displacement ("velocity"
+    /// in dynamics, "contact_force" with contact), ghosted.
+    struct NodalField
+    {
+      std::string                                  name;
+      const dealii::TrilinosWrappers::MPI::Vector *values;
+    };
+
     /// Writes <base>_<step>.<rank>.vtu, <base>_<step>.pvtu and rewrites
-    /// <base>.pvd. @p u (and @p velocity, written as the vector field
-    /// "velocity" if not null: dynamics) must have ghost entries.
+    /// <base>.pvd. @p u and the @p nodal fields must have ghost entries.
     void
-    write_fields(
-      unsigned int                                 step,
-      double                                       load_factor,
-      const dealii::DoFHandler<dim>               &dof_handler,
-      const dealii::Mapping<dim>                  &mapping,
-      const dealii::TrilinosWrappers::MPI::Vector &u,
-      const CellFields                            &fields,
-      const dealii::TrilinosWrappers::MPI::Vector *velocity = nullptr);
+    write_fields(unsigned int                                 step,
+                 double                                       load_factor,
+                 const dealii::DoFHandler<dim>               &dof_handler,
+                 const dealii::Mapping<dim>                  &mapping,
+                 const dealii::TrilinosWrappers::MPI::Vector &u,
+                 const CellFields                            &fields,
+                 const std::vector<NodalField>               &nodal = {});
 
     /// Appends one row to <base>.csv (rank 0 writes), after the header of
     /// the column names if the file is still empty.

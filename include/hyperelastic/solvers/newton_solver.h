@@ -137,6 +137,16 @@ namespace hyperelastic
     /// converged state is not acceptable (for example inverted elements).
     virtual void
     verify_converged_state() = 0;
+
+    /// Called once Newton's tests pass, before verify_converged_state():
+    /// updates quantities the equations lag behind the iterate (friction's
+    /// normal forces and tangents). Returns true if they changed enough that
+    /// Newton must go on from the current iterate (the energy changed).
+    virtual bool
+    update_lagged_quantities()
+    {
+      return false;
+    }
   };
 
   class NewtonSolver
