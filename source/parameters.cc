@@ -52,13 +52,6 @@ namespace hyperelastic
     // Checks that need the dimension.
     const unsigned int dim = problem.dimension;
     contact.check(dim);
-    if (contact.active() && time_integration.scheme == TimeScheme::midpoint)
-      reject("Time integration/Scheme",
-             "implicit midpoint",
-             "contact (Contact/Obstacle ...) needs a scheme whose solved "
-             "state is the end of the step, 'backward Euler' or 'Newmark': "
-             "implicit midpoint's end state is extrapolated and could cross "
-             "an obstacle");
     const auto size = [](const auto &v) { return std::to_string(v.size()); };
     if (mesh.source == MeshSource::box)
       {

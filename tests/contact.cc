@@ -8,8 +8,9 @@
 //               distance positive and cuts a step that would cross.
 //   resting DIM a block under gravity on a plane, rollers on its symmetry
 //               planes: the plane's total force equals the weight (1e-8),
-//               every distance lies in (0, d_hat); the same floor as a
-//               surface mesh gives the same run (1e-9).
+//               every distance lies in (0, d_hat); so with the mixed
+//               formulation; the same floor as a surface mesh gives the
+//               same run (1e-9).
 //   drop DIM    a block dropped on a plane with backward Euler: every
 //               step's contact_min_distance > 0, the total energy never
 //               grows (the scheme dissipates), the block hits the floor and
@@ -424,6 +425,18 @@ namespace
                   column(last, "contact_active_pairs"),
                   0.);
 
+    // The mixed displacement-pressure formulation (decoupled neo-Hookean):
+    // the floor carries the weight as well.
+    const auto mixed = run_scene<dim>(
+      scene + subsection("Problem", entry("Formulation", "mixed")) +
+      subsection("Material", entry("Model", "decoupled neo-Hookean")));
+    checker.close(tag + "mixed formulation: contact_force_1_" + up +
+                    " = weight 0.1",
+                  column(mixed->summaries().back(), "contact_force_1_" + up),
+                  0.1,
+                  0.1,
+                  1e-8);
+
     // The floor as a surface mesh (a square of 2 x 2 elements at the same
     // height, 2 lines in 2D): the same distances, so the same run.
     std::vector<dealii::Point<dim>>            points;
@@ -475,9 +488,10 @@ namespace
     const std::string scene =
       block_above_floor<dim>(0.1, 4, "20", "1", "0", "0.005") +
       subsection("Time integration",
-                 entry("Scheme", "backward Euler") +
-                   entry("Time step", "0.05") + entry("End time", "1.5"));
-    const auto        problem  = run_scene<dim>(scene);
+                 entry("Time step", "0.05") + entry("End time", "1.5"));
+    const auto problem =
+      run_scene<dim>(scene + subsection("Time integration",
+                                        entry("Scheme", "backward Euler")));
     const std::string up       = dim == 3 ? "z" : "y";
     double            smallest = 1e300, growth = -1e300, most_force = 0.;
     double            previous = 0., upward = 0.;
@@ -508,6 +522,34 @@ namespace
     checker.above(tag + "largest upward momentum after the impact (bounce)",
                   upward,
                   0.);
+
+    // Implicit midpoint, frictionless: the barrier holds at the end state
+    // of each step (u_n + 2 (u - u_n)), so no end state crosses the floor.
+    // Midpoint keeps the energy of the fall; the barrier's work, taken at
+    // the end state, can only dissipate (V convex in the gap).
+    const auto midpoint =
+      run_scene<dim>(scene + subsection("Time integration",
+                                        entry("Scheme", "implicit midpoint")));
+    double lowest = 1e300, highest = -1e300, closest = 1e300, impact = 0.;
+    for (const auto &s : midpoint->summaries())
+      {
+        const double total = column(s, "total_energy");
+        lowest             = std::min(lowest, total);
+        highest            = std::max(highest, total);
+        closest = std::min(closest, column(s, "contact_min_distance"));
+        impact  = std::max(impact, column(s, "kinetic_energy"));
+      }
+    const std::string mid = std::to_string(dim) + "D drop, implicit midpoint: ";
+    checker.above(mid + "smallest contact_min_distance over all steps",
+                  closest,
+                  0.);
+    checker.at_most(mid + "largest total energy (starts at 0) / kinetic "
+                          "energy at impact",
+                    highest / impact,
+                    1e-6);
+    checker.at_least(mid + "smallest total energy / kinetic energy at impact",
+                     lowest / impact,
+                     -0.25);
   }
 
   /// The homogeneous uniaxial state of the compressible neo-Hookean model

@@ -240,11 +240,15 @@ namespace hyperelastic
 
   template <int dim>
   Point<dim>
-  ObstacleContact<dim>::position(const Vertex &v, const VectorType &u) const
+  ObstacleContact<dim>::position(const unsigned int a,
+                                 const VectorType  &u) const
   {
-    Point<dim> x = v.X;
+    const Vertex &v = vertices[a];
+    Point<dim>    x = v.X;
     for (unsigned int d = 0; d < dim; ++d)
       x[d] += u(v.dofs[d]);
+    if (end_factor != 1.)
+      x = start_positions[a] + end_factor * (x - start_positions[a]);
     return x;
   }
 
@@ -316,15 +320,20 @@ namespace hyperelastic
                                       const F          &f) const
   {
     const std::vector<Placed> where = placed(obstacle_time(t));
-    const double eps     = friction_smoothing(t - std::min(step_start, t));
-    bool         crossed = false;
+    const double              eps =
+      friction_smoothing(end_time(t) - std::min(step_start, t));
+    bool crossed = false;
     for (unsigned int a = 0; a < vertices.size(); ++a)
       {
-        const Point<dim> x = position(vertices[a], u);
+        const Point<dim> x = position(a, u);
         for (unsigned int k = 0; k < obstacles.size(); ++k)
           {
-            const PairState p = pair(a, k, x, where[k], eps, with_stiffness);
-            crossed           = crossed || !(p.distance > 0.);
+            PairState p = pair(a, k, x, where[k], eps, with_stiffness);
+            // The potential V(x_end) / c in the solved state: gradient
+            // V'(x_end), Hessian c V''(x_end).
+            p.energy /= end_factor;
+            p.stiffness *= end_factor;
+            crossed = crossed || !(p.distance > 0.);
             f(a, k, p);
           }
       }
@@ -385,9 +394,10 @@ namespace hyperelastic
     // forces depend on x - w, so the right-hand side gains K w on the
     // pair's rows (the obstacle drags the vertices it touches).
     std::vector<Tensor<1, dim>> rest(obstacles.size());
-    if (reached < t)
+    if (reached < end_time(t))
       {
-        const std::vector<Placed> now = placed(reached), end = placed(t);
+        const std::vector<Placed> now = placed(reached),
+                                  end = placed(end_time(t));
         for (unsigned int k = 0; k < obstacles.size(); ++k)
           rest[k] = end[k].point - now[k].point;
       }
@@ -398,29 +408,29 @@ namespace hyperelastic
     // The right-hand side's switch to adding, on every rank (collective in
     // Trilinos); add_condensed then adds on the ranks with contact only.
     rhs.add(std::vector<types::global_dof_index>(), std::vector<double>());
-    for_each_pair(u,
-                  t,
-                  true,
-                  [&](const unsigned int a,
-                      const unsigned int k,
-                      const PairState   &p) {
-                    if (p.stiffness.norm() == 0.)
-                      return;
-                    for (unsigned int i = 0; i < dim; ++i)
-                      {
-                        dofs[i] = vertices[a].dofs[i];
-                        for (unsigned int j = 0; j < dim; ++j)
-                          block(i, j) = p.stiffness[i][j];
-                      }
-                    add_condensed(block, dofs, constraints, matrix, rhs);
-                    const Tensor<1, dim> pull = p.stiffness * rest[k];
-                    for (unsigned int i = 0; i < dim; ++i)
-                      if (pull[i] != 0. && !constraints.is_constrained(dofs[i]))
-                        {
-                          drag_rows.push_back(dofs[i]);
-                          drag.push_back(pull[i]);
-                        }
-                  });
+    for_each_pair(
+      u,
+      t,
+      true,
+      [&](const unsigned int a, const unsigned int k, const PairState &p) {
+        if (p.stiffness.norm() == 0.)
+          return;
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            dofs[i] = vertices[a].dofs[i];
+            for (unsigned int j = 0; j < dim; ++j)
+              block(i, j) = p.stiffness[i][j];
+          }
+        add_condensed(block, dofs, constraints, matrix, rhs);
+        // K w, K the pair's stiffness in the end state.
+        const Tensor<1, dim> pull = p.stiffness * rest[k] / end_factor;
+        for (unsigned int i = 0; i < dim; ++i)
+          if (pull[i] != 0. && !constraints.is_constrained(dofs[i]))
+            {
+              drag_rows.push_back(dofs[i]);
+              drag.push_back(pull[i]);
+            }
+      });
     rhs.add(drag_rows, drag);
   }
 
@@ -450,18 +460,19 @@ namespace hyperelastic
     // their place at t (a straight way in between).
     const std::vector<Placed> now = placed(obstacle_time(t));
     std::vector<Placed>       end = now;
-    if (reached < t)
-      end = placed(t);
+    if (reached < end_time(t))
+      end = placed(end_time(t));
     double alpha = 1.;
-    for (const Vertex &v : vertices)
+    for (unsigned int a = 0; a < vertices.size(); ++a)
       {
-        const Point<dim> x = position(v, u);
+        const Vertex    &v = vertices[a];
+        const Point<dim> x = position(a, u);
         for (unsigned int k = 0; k < obstacles.size(); ++k)
           {
             // The vertex's motion relative to the obstacle.
             Tensor<1, dim> p = now[k].point - end[k].point;
             for (unsigned int c = 0; c < dim; ++c)
-              p[c] += direction(v.dofs[c]);
+              p[c] += end_factor * direction(v.dofs[c]);
             if (now[k].type == ObstacleType::mesh)
               {
                 alpha = std::min(
@@ -508,7 +519,7 @@ namespace hyperelastic
     const std::vector<Placed> where = placed(time);
     for (unsigned int a = 0; a < vertices.size(); ++a)
       {
-        const Point<dim> x = position(vertices[a], u);
+        const Point<dim> x = position(a, u);
         for (unsigned int k = 0; k < obstacles.size(); ++k)
           {
             Tensor<1, dim> n;
@@ -533,9 +544,10 @@ namespace hyperelastic
     step_start      = t_start;
     reached         = t_start;
     lagging_updates = 0;
+    end_factor      = 1.;
     start_positions.resize(vertices.size());
     for (unsigned int a = 0; a < vertices.size(); ++a)
-      start_positions[a] = position(vertices[a], u);
+      start_positions[a] = position(a, u);
     lagged = lagged_at(u, t_start);
   }
 
@@ -543,14 +555,15 @@ namespace hyperelastic
   bool
   ObstacleContact<dim>::moving(const double t)
   {
-    if (!(reached < t))
+    const double t_end = end_time(t);
+    if (!(reached < t_end))
       return false;
-    const std::vector<Placed> now = placed(reached), end = placed(t);
+    const std::vector<Placed> now = placed(reached), end = placed(t_end);
     for (unsigned int k = 0; k < obstacles.size(); ++k)
       if (now[k].point != end[k].point)
         return true;
     // Standing still: nothing to carry.
-    reached = t;
+    reached = t_end;
     return false;
   }
 
@@ -558,8 +571,9 @@ namespace hyperelastic
   void
   ObstacleContact<dim>::advance(const double alpha, const double t)
   {
-    if (reached < t)
-      reached = alpha >= 1. ? t : reached + alpha * (t - reached);
+    const double t_end = end_time(t);
+    if (reached < t_end)
+      reached = alpha >= 1. ? t_end : reached + alpha * (t_end - reached);
   }
 
   template <int dim>

@@ -102,7 +102,11 @@ namespace hyperelastic
         stiffness_damping->set_step(parameters.stiffness_damping * kappa,
                                     scratch);
       }
-    return integrator->evaluation_time(converged.load_factor, t);
+    // Terms held at the end of the step (contact) map the solved state to
+    // it: implicit midpoint solves half way.
+    const double solved = integrator->evaluation_time(converged.load_factor, t);
+    context.elasticity.set_end_state_map(h / (solved - converged.load_factor));
+    return solved;
   }
 
   template <int dim>
@@ -112,6 +116,8 @@ namespace hyperelastic
                                      VectorType           &u,
                                      VectorType           &u_ghosted)
   {
+    // The accepted state is the end state: the terms evaluate it as it is.
+    context.elasticity.set_end_state_map(1.);
     if (!converged.valid)
       return solved;
     // The step from converged (t_n, u_n) to its end (implicit midpoint: from

@@ -111,13 +111,19 @@ namespace hyperelastic
       return alpha;
     }
 
-    /// The load terms' step hooks (LoadTerm::begin_step, moving, advance,
-    /// update_lagged), each over all terms. Collective.
+    /// The load terms' step hooks (LoadTerm::begin_step, set_end_state_map,
+    /// moving, advance, update_lagged), each over all terms. Collective.
     void
     begin_step(const VectorType &u, const double t_start)
     {
       for (const auto &term : terms)
         term->begin_step(u, t_start);
+    }
+    void
+    set_end_state_map(const double c)
+    {
+      for (const auto &term : terms)
+        term->set_end_state_map(c);
     }
     bool
     moving(const double t)

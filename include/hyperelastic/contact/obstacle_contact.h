@@ -45,6 +45,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <memory>
@@ -116,6 +117,11 @@ namespace hyperelastic
 
     void
     begin_step(const VectorType &u, double t_start) override;
+    void
+    set_end_state_map(double c) override
+    {
+      end_factor = c;
+    }
     bool
     moving(double t) override;
     void
@@ -246,15 +252,26 @@ namespace hyperelastic
     std::vector<Lagged>
     lagged_at(const VectorType &u, double time) const;
 
+    /// Where vertex @p a is at the end of the step whose solved state is
+    /// @p u (X + u, or its image under the end-state map).
     dealii::Point<dim>
-    position(const Vertex &v, const VectorType &u) const;
+    position(unsigned int a, const VectorType &u) const;
 
-    /// Where the obstacles are evaluated for load factor @p t: at t, or
-    /// where they stand on their way within the step.
+    /// The end time of the step solved at @p t (t, or its image under the
+    /// end-state map).
+    double
+    end_time(double t) const
+    {
+      return std::isfinite(reached) ? step_start + end_factor * (t - step_start)
+                                    : t;
+    }
+
+    /// Where the obstacles are evaluated for load factor @p t: at the end
+    /// time, or where they stand on their way within the step.
     double
     obstacle_time(double t) const
     {
-      return std::min(t, reached);
+      return std::min(end_time(t), reached);
     }
 
     const std::vector<ObstacleParameters> obstacles;
@@ -279,7 +296,9 @@ namespace hyperelastic
     std::vector<dealii::Point<dim>> start_positions;
     std::vector<Lagged>             lagged;
     unsigned int                    lagging_updates = 0;
-    dealii::TimerOutput            *timer           = nullptr;
+    /// c of the end-state map (set_end_state_map).
+    double               end_factor = 1.;
+    dealii::TimerOutput *timer      = nullptr;
 
     /// A scope of the section "contact" (empty without a timer).
     std::optional<dealii::TimerOutput::Scope>

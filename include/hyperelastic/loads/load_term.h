@@ -97,6 +97,18 @@ namespace hyperelastic
       (void)u, (void)t_start;
     }
 
+    /// The step's solved state u relates to its end state as u_end = u_n +
+    /// @p c (u - u_n), at time t_end = t_n + c (t - t_n) (implicit
+    /// midpoint: c = 2; 1 otherwise), from the u_n and t_n of begin_step().
+    /// A term that must hold at the end of the step (contact: no vertex
+    /// through an obstacle at the end state) evaluates itself there, with
+    /// the potential V(u_end) / c (whose gradient in u is V'(u_end)).
+    virtual void
+    set_end_state_map(double c)
+    {
+      (void)c;
+    }
+
     /// Whether the term's admissible set has not reached its place at @p t
     /// yet (an obstacle on its way within the step). The linearization then
     /// carries the rest of the motion, the iteration is a predictor (no
