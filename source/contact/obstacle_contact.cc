@@ -1,7 +1,6 @@
 // The barrier contact and lagged friction of boundary vertices with rigid
-// planes and spheres.
+// planes, spheres and surface meshes.
 #include <deal.II/base/mpi.h>
-#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <hyperelastic/base/error_handling.h>
@@ -9,7 +8,6 @@
 #include <hyperelastic/contact/friction.h>
 #include <hyperelastic/contact/obstacle_contact.h>
 #include <hyperelastic/loads/boundary_conditions.h>
-#include <hyperelastic/materials/tangent_projection.h>
 #include <hyperelastic/mesh/mesh_distribution.h>
 
 #include <algorithm>
