@@ -29,15 +29,7 @@ namespace hyperelastic
                                                true,
                                                homogeneous_constraints);
 
-    // All couplings, constrained dofs included: the P1 kernel relies on
-    // every node pair having a full dim x dim block in the matrix.
-    DynamicSparsityPattern dsp(relevant_dofs);
-    DoFTools::make_sparsity_pattern(parts.dof_handler, dsp);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               owned_dofs,
-                                               comm,
-                                               relevant_dofs);
-    tangent.reinit(owned_dofs, owned_dofs, dsp, comm);
+    build_tangent_sparsity();
 
     for (VectorType *v : {&u,
                           &update,
@@ -50,6 +42,28 @@ namespace hyperelastic
                           &previous.u})
       v->reinit(owned_dofs, comm);
     u_ghosted.reinit(owned_dofs, relevant_dofs, comm);
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::build_tangent_sparsity()
+  {
+    // All couplings, constrained dofs included: the P1 kernel relies on
+    // every node pair having a full dim x dim block in the matrix. The load
+    // terms add theirs (self-contact pairs) on their owned rows.
+    DynamicSparsityPattern dsp(relevant_dofs);
+    DoFTools::make_sparsity_pattern(parts.dof_handler, dsp);
+    if (elasticity)
+      elasticity->add_couplings(dsp);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               owned_dofs,
+                                               comm,
+                                               relevant_dofs);
+    // The new matrix is built while the old one still exists: it gets
+    // another address, by which the assembler's cached entry positions and
+    // the preconditioner know they belong to the old one.
+    const MatrixType old(std::move(tangent));
+    tangent.reinit(owned_dofs, owned_dofs, dsp, comm);
   }
 
   template <int dim>
@@ -89,7 +103,15 @@ namespace hyperelastic
     // A load term's admissible set on its way (an obstacle moving within
     // the step) makes this iteration a predictor too: the linearization
     // carries the rest of its motion.
-    const bool         moves_terms = elasticity->moving(current_load_factor);
+    const bool moves_terms = elasticity->moving(current_load_factor);
+    // Self-contact pairs between distant parts of the boundary couple dofs
+    // the mesh does not: the tangent's sparsity grows with them (the
+    // preconditioner is then built anew for the new matrix).
+    if (elasticity->needs_new_couplings(u_ghosted, current_load_factor))
+      {
+        TimerOutput::Scope scope(parts.timer, "contact sparsity");
+        build_tangent_sparsity();
+      }
     TimerOutput::Scope scope(parts.timer, "assembly");
     // The update of this linearization must satisfy these constraints.
     active_constraints =

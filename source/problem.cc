@@ -7,7 +7,9 @@
 #include <deal.II/fe/fe_simplex_p.h>
 
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/contact/self_contact.h>
 #include <hyperelastic/formulation/formulation_registry.h>
+#include <hyperelastic/mesh/bodies.h>
 #include <hyperelastic/mesh/mesh.h>
 #include <hyperelastic/problem.h>
 #include <hyperelastic/solvers/rigid_body_modes.h>
@@ -86,7 +88,7 @@ namespace hyperelastic
       *boundary_conditions,
       parameters.problem.fast_p1_assembly,
       formulation->material_part(dof_handler, mapping, *material));
-    if (parameters.contact.active())
+    if (!parameters.contact.obstacles.empty())
       {
         auto term = std::make_unique<ObstacleContact<dim>>(
           parameters.contact,
@@ -96,6 +98,21 @@ namespace hyperelastic
           parameters.time_integration.dynamic());
         term->set_timer(timer);
         contact = term.get();
+        elasticity->add_term(std::move(term));
+      }
+    if (parameters.contact.self_contact)
+      {
+        if (pressure_dofs.n_elements() > 0)
+          throw InputError(
+            "'Contact/Self contact = true' needs 'Problem/Formulation = "
+            "displacement' (the mixed formulation's block preconditioner "
+            "keeps the tangent's sparsity, which self-contact pairs grow)");
+        auto term =
+          std::make_unique<SelfContact<dim>>(parameters.contact,
+                                             dof_handler,
+                                             material->small_strain_moduli());
+        term->set_timer(timer);
+        self_contact = term.get();
         elasticity->add_term(std::move(term));
       }
     stepping = create_time_stepping<dim>({parameters,
@@ -112,6 +129,24 @@ namespace hyperelastic
                        "'): rigid-body motions would be free and the "
                        "quasi-static problem singular (in dynamics, "
                        "'Time integration/Scheme', the mass makes it regular)");
+    // Each body of a quasi-static scene must be held: a mesh may hold
+    // several (a body clamped, another pressed onto it).
+    if (stepping->needs_supports() && !parameters.contact.active())
+      {
+        std::set<types::boundary_id> ids;
+        for (const auto &d : boundary_conditions->dirichlet)
+          ids.insert(d.id);
+        const std::vector<Body<dim>> bodies = find_bodies(dof_handler, ids);
+        for (unsigned int k = 0; k < bodies.size(); ++k)
+          if (!bodies[k].held)
+            throw InputError(
+              bodies[k].describe(k + 1) + " of the mesh's " +
+              std::to_string(bodies.size()) +
+              " has neither a Dirichlet condition nor a possible contact: it "
+              "could move as a rigid body and the quasi-static problem is "
+              "singular. Give one of its boundary faces a Dirichlet condition, "
+              "or let contact hold it ('Contact/Self contact' or an obstacle)");
+      }
     stepping->initialize(system->solution());
     system->attach(*elasticity, *stepping);
     // A load without a potential makes the tangent non-symmetric.
@@ -161,6 +196,19 @@ namespace hyperelastic
                       std::to_string(contact->friction_smoothing(1.))
                   : std::string())
             << std::endl;
+    if (self_contact)
+      {
+        const auto size = self_contact->boundary_size();
+        pcout << "self contact: " << size[0] << " boundary vertices, "
+              << size[1] << (dim == 2 ? " segments" : " triangles");
+        if (dim == 3)
+          pcout << ", " << size[2] << " edges";
+        pcout << " on every rank (exchange: " << dim * size[0]
+              << " doubles per evaluation), barrier distance d_hat = "
+              << self_contact->barrier_distance()
+              << ", barrier stiffness kappa = "
+              << self_contact->barrier_stiffness() << std::endl;
+      }
     const std::string warning = formulation->warning(*material);
     if (!warning.empty())
       pcout << warning << std::endl;
@@ -189,6 +237,8 @@ namespace hyperelastic
     postprocessor->measure(system->solution(), system->residual_forces(), s);
     if (contact)
       contact->summarize(system->solution(), s.load_factor, s);
+    if (self_contact)
+      self_contact->summarize(system->solution(), s);
 
     scope.stop();
     if (parameters.output.write_vtu &&
@@ -207,15 +257,19 @@ namespace hyperelastic
     std::vector<typename OutputWriter<dim>::NodalField> nodal;
     if (const VectorType *velocity = stepping->output_velocity())
       nodal.push_back({"velocity", velocity});
-    // The force the obstacles exert on the body, per boundary vertex.
+    // The force the obstacles and the rest of the boundary (self contact)
+    // exert on the body, per boundary vertex.
     VectorType contact_force;
-    if (contact)
+    if (contact || self_contact)
       {
         VectorType owned(dof_handler.locally_owned_dofs(),
                          dof_handler.get_communicator());
-        contact->contact_forces(system->solution(),
-                                system->load_factor(),
-                                owned);
+        if (contact)
+          contact->contact_forces(system->solution(),
+                                  system->load_factor(),
+                                  owned);
+        if (self_contact)
+          self_contact->contact_forces(system->solution(), owned);
         owned.compress(VectorOperation::add);
         contact_force.reinit(system->solution());
         contact_force = owned;
@@ -277,6 +331,8 @@ namespace hyperelastic
         const StepSummary<dim> summary = summarize(step, result);
         writer->write_summary(summary.columns());
         step_summaries.push_back(summary);
+        if (step_observer)
+          step_observer(summary);
         pcout << "   converged in " << result.iterations()
               << " Newton iterations (" << result.linear_iterations()
               << " linear";
@@ -286,6 +342,17 @@ namespace hyperelastic
               << ", min J " << summary.min_J << std::setprecision(6)
               << std::endl;
       });
+    if (self_contact)
+      {
+        // Where self-contact's time went (rank 0; the timing table below
+        // holds all contact work in its section "contact").
+        const auto &c = self_contact->cost();
+        pcout << "\nself contact: " << c.evaluations
+              << " evaluations; wall time: exchange " << c.exchange
+              << " s, broad phase " << c.broad << " s, narrow phase "
+              << c.narrow << " s, CCD " << c.ccd << " s; "
+              << c.sparsity_rebuilds << " sparsity rebuilds" << std::endl;
+      }
     pcout << "\nSummary per load step: " << writer->csv_file();
     if (parameters.output.write_vtu)
       pcout << "; fields for ParaView: " << parameters.output.directory << "/"

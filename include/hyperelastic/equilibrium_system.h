@@ -146,6 +146,11 @@ namespace hyperelastic
     double
     free_residual_norm(double &noise);
 
+    /// (Re)builds the tangent's sparsity: the mesh's couplings and the load
+    /// terms' (LoadTerm::add_couplings). Collective.
+    void
+    build_tangent_sparsity();
+
     const Parts              parts;
     const MPI_Comm           comm;
     dealii::IndexSet         owned_dofs, relevant_dofs;

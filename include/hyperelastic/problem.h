@@ -38,6 +38,9 @@
 namespace hyperelastic
 {
   template <int dim>
+  class SelfContact;
+
+  template <int dim>
   class Problem
   {
   public:
@@ -56,6 +59,15 @@ namespace hyperelastic
     set_load_editor(std::function<void(BoundaryConditions<dim> &)> editor)
     {
       load_editor = std::move(editor);
+    }
+
+    /// Lets code look at every converged state (tests: the boundary free of
+    /// intersections at every step): @p observer is called with the step's
+    /// summary after it is recorded, while solution() is that state.
+    void
+    set_step_observer(std::function<void(const StepSummary<dim> &)> observer)
+    {
+      step_observer = std::move(observer);
     }
 
     /// One entry per converged load step.
@@ -152,12 +164,16 @@ namespace hyperelastic
     std::unique_ptr<Material<3>>                   material3d;
     std::unique_ptr<BoundaryConditions<dim>>       boundary_conditions;
     std::function<void(BoundaryConditions<dim> &)> load_editor;
+    std::function<void(const StepSummary<dim> &)>  step_observer;
     std::unique_ptr<ElasticityOperator<dim>>       elasticity;
     std::unique_ptr<TimeStepping<dim>>             stepping;
     std::unique_ptr<EquilibriumSystem<dim>>        system;
     /// The obstacles' barrier term ('Contact', owned by the operator; null
     /// without obstacles).
     ObstacleContact<dim>                   *contact = nullptr;
+    /// The boundary's contact with itself ('Contact/Self contact'; null
+    /// when off).
+    SelfContact<dim> *self_contact = nullptr;
     std::unique_ptr<StepPostprocessor<dim>> postprocessor;
     std::unique_ptr<OutputWriter<dim>>      writer;
     LinearSolver                            linear_solver;

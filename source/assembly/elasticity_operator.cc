@@ -12,17 +12,19 @@ namespace hyperelastic
 
   template <int dim>
   ElasticityOperator<dim>::ElasticityOperator(
-    const DoFHandler<dim>         &dof_handler,
-    const Mapping<dim>            &mapping,
-    const Material<dim>           &material,
-    const BoundaryConditions<dim> &boundary_conditions,
-    const bool                     fast_p1,
+    const DoFHandler<dim>          &dof_handler,
+    const Mapping<dim>             &mapping,
+    const Material<dim>            &material,
+    const BoundaryConditions<dim>  &boundary_conditions,
+    const bool                      fast_p1,
     std::unique_ptr<Assembler<dim>> material_part)
       : dof_handler(dof_handler)
       , replaced(material_part != nullptr)
-      , generic(material_part ? std::move(material_part) :
-                                std::make_unique<GenericAssembler<dim>>(
-                                  dof_handler, mapping, material))
+      , generic(material_part
+                  ? std::move(material_part)
+                  : std::make_unique<GenericAssembler<dim>>(dof_handler,
+                                                            mapping,
+                                                            material))
   {
     for (auto &term :
          create_load_terms(boundary_conditions, dof_handler, mapping))
@@ -124,7 +126,10 @@ namespace hyperelastic
       return;
     for (const auto &term : terms)
       if (term->depends_on_solution())
-        term->add_load_stiffness(u, t, constraints, matrix, rhs);
+        {
+          term->request_positive_semidefinite(project_tangent);
+          term->add_load_stiffness(u, t, constraints, matrix, rhs);
+        }
     matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
   }

@@ -48,6 +48,18 @@ namespace hyperelastic
       "and tangent directions taken from its converged state (they start "
       "from the last step's); it stops earlier once no normal force changes "
       "by more than 1e-3 of the largest. 0: the last step's values only.");
+    prm.declare_entry(
+      "Self contact",
+      "false",
+      Bool(),
+      "Contact between parts of the body's boundary that are not neighbours, "
+      "and between the bodies of a mesh with several (volumes not connected "
+      "to each other): point-segment pairs in 2D, point-triangle and "
+      "edge-edge pairs in 3D, through the same barrier as the obstacles; no "
+      "iterate lets the boundary pass through itself (continuous collision "
+      "detection bounds every step). The barrier distance must be smaller "
+      "than the distances between non-neighbouring boundary primitives in "
+      "the reference configuration. Displacement formulation only.");
     for (unsigned int k = 1; k <= max_obstacles; ++k)
       {
         prm.enter_subsection("Obstacle " + std::to_string(k));
@@ -101,6 +113,7 @@ namespace hyperelastic
     barrier_stiffness        = get_finite(prm, "Contact", "Barrier stiffness");
     friction_smoothing       = get_finite(prm, "Contact", "Friction smoothing");
     friction_lagging_updates = prm.get_integer("Friction lagging updates");
+    self_contact             = prm.get_bool("Self contact");
     obstacles.clear();
     for (unsigned int k = 1; k <= max_obstacles; ++k)
       {

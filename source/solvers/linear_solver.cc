@@ -61,7 +61,11 @@ namespace hyperelastic
   {
     if (parameters.type == LinearSolverType::direct)
       return;
-    if (!amg_built || rebuild_requested || parameters.amg_rebuild_growth == 0.)
+    // A new matrix object (the tangent's sparsity grew: self-contact) needs
+    // a new hierarchy; the kept one would refer to the old matrix.
+    if (!amg_built || rebuild_requested ||
+        parameters.amg_rebuild_growth == 0. ||
+        &A.trilinos_matrix() != amg_matrix)
       build_amg(A, true);
   }
 

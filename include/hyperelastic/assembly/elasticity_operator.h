@@ -111,6 +111,25 @@ namespace hyperelastic
       return alpha;
     }
 
+    /// Whether a load term needs couplings the tangent's sparsity lacks
+    /// (LoadTerm::needs_new_couplings; every term is asked). Collective.
+    bool
+    needs_new_couplings(const VectorType &u, const double t)
+    {
+      bool any = false;
+      for (const auto &term : terms)
+        any = term->needs_new_couplings(u, t) || any;
+      return any;
+    }
+
+    /// Adds the load terms' couplings to @p pattern.
+    void
+    add_couplings(dealii::DynamicSparsityPattern &pattern) const
+    {
+      for (const auto &term : terms)
+        term->add_couplings(pattern);
+    }
+
     /// The load terms' step hooks (LoadTerm::begin_step, set_end_state_map,
     /// moving, advance, update_lagged), each over all terms. Collective.
     void

@@ -48,13 +48,15 @@ namespace hyperelastic
     /// velocity); 0: automatic.
     double       friction_smoothing       = 0.;
     unsigned int friction_lagging_updates = 4;
+    /// Contact between parts of the body's boundary (and between bodies).
+    bool self_contact = false;
     /// The obstacles whose Type is not none, in the order of their sections.
     std::vector<ObstacleParameters> obstacles;
 
     bool
     active() const
     {
-      return !obstacles.empty();
+      return !obstacles.empty() || self_contact;
     }
 
     static void

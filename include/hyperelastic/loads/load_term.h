@@ -9,6 +9,7 @@
 #pragma once
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/linear_algebra.h>
@@ -62,6 +63,17 @@ namespace hyperelastic
       (void)u, (void)t, (void)constraints, (void)matrix, (void)rhs;
     }
 
+    /// Whether the next add_load_stiffness() is to give a positive
+    /// semi-definite stiffness (Newton's projected tangent, after the exact
+    /// one gave no descent direction) or the exact one. Terms whose exact
+    /// stiffness may be indefinite (self-contact pairs) follow it; the
+    /// others ignore it.
+    virtual void
+    request_positive_semidefinite(bool positive_semidefinite)
+    {
+      (void)positive_semidefinite;
+    }
+
     /// The potential V(u, t), with dV/du = -g: only called if
     /// depends_on_solution() and is_conservative(). Collective.
     virtual double
@@ -82,6 +94,25 @@ namespace hyperelastic
     {
       (void)u, (void)direction, (void)t;
       return 1.;
+    }
+
+    /// Whether the tangent needs couplings between dofs that the mesh's
+    /// cells do not make (self-contact: distant parts of the boundary come
+    /// close) and that its sparsity, last built with add_couplings(), lacks
+    /// at @p u (ghosted). Collective.
+    virtual bool
+    needs_new_couplings(const VectorType &u, double t)
+    {
+      (void)u, (void)t;
+      return false;
+    }
+
+    /// Adds the couplings the term's load stiffness writes (its owned rows)
+    /// to @p pattern, with a margin so that a few iterates more fit in.
+    virtual void
+    add_couplings(dealii::DynamicSparsityPattern &pattern) const
+    {
+      (void)pattern;
     }
 
     // Step state. Terms whose admissible set moves with t (contact: the

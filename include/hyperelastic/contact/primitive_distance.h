@@ -1,0 +1,404 @@
+// Distances between boundary primitives for self-contact (IPC, Li et al.
+// 2020): point-segment pairs in 2D, point-triangle and edge-edge pairs in 3D.
+//
+// A pair's coordinates are one flat array x of its points (dim entries each):
+//   point-segment  [p, a, b]            (2D, n = 6)
+//   point-triangle [p, t0, t1, t2]      (3D, n = 12)
+//   edge-edge      [a0, a1, b0, b1]     (3D, n = 12)
+// The closest features decide which smooth formula gives the squared
+// distance (IPC's "distance types"): point-point |p - a|^2, point-line
+// |(a - p) x (b - p)|^2 / |b - a|^2, point-plane ((p - a) . n)^2 / |n|^2 and
+// line-line ((b0 - a0) . (ea x eb))^2 / |ea x eb|^2. classify_*() picks the
+// case at the current x (in doubles); squared_distance() evaluates it for
+// any number type, so that the barrier energy of a pair,
+//   kappa w m(x) b(sqrt(d^2(x)), d_hat)
+// (m the edge-edge mollifier, 1 otherwise), is differentiated exactly by
+// forward automatic differentiation (Sacado, nested twice for the Hessian).
+// Within a case the formulas are smooth; across cases the distance is C1.
+//
+// Edge-edge pairs of nearly parallel edges are mollified (IPC): with
+// c = |ea x eb|^2 and eps_x = 1e-3 |ea_rest|^2 |eb_rest|^2,
+//   m(c) = (2 - c / eps_x) c / eps_x  for c < eps_x, 1 beyond,
+// so the energy goes to zero smoothly as the edges turn parallel, where the
+// line-line distance loses its meaning.
+//
+// Pure functions of the coordinates: nothing here knows about meshes or MPI.
+#pragma once
+
+#include <hyperelastic/materials/tangent_projection.h>
+
+#include <Sacado.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+
+namespace hyperelastic
+{
+  /// The smooth formula that gives a pair's squared distance, and the
+  /// points (indices into the pair's point list) it involves.
+  struct DistanceCase
+  {
+    enum Type
+    {
+      point_point, ///< |x_i - x_j|^2
+      point_line,  ///< x_i to the line through x_j, x_k
+      point_plane, ///< x_i to the plane through x_j, x_k, x_l
+      line_line    ///< the line x_i x_j to the line x_k x_l
+    };
+    Type                        type = point_point;
+    std::array<unsigned int, 4> p    = {{0, 0, 0, 0}};
+  };
+
+  namespace primitive_geometry
+  {
+    template <typename T, int dim>
+    using Vec = std::array<T, dim>;
+
+    template <int dim, typename T, std::size_t n>
+    Vec<T, dim>
+    point(const std::array<T, n> &x, const unsigned int i)
+    {
+      Vec<T, dim> v;
+      for (int d = 0; d < dim; ++d)
+        v[d] = x[i * dim + d];
+      return v;
+    }
+
+    template <typename T, int dim>
+    Vec<T, dim>
+    minus(const Vec<T, dim> &a, const Vec<T, dim> &b)
+    {
+      Vec<T, dim> v;
+      for (int d = 0; d < dim; ++d)
+        v[d] = a[d] - b[d];
+      return v;
+    }
+
+    template <typename T, int dim>
+    T
+    dot(const Vec<T, dim> &a, const Vec<T, dim> &b)
+    {
+      T s = a[0] * b[0];
+      for (int d = 1; d < dim; ++d)
+        s += a[d] * b[d];
+      return s;
+    }
+
+    template <typename T>
+    Vec<T, 3>
+    cross(const Vec<T, 3> &a, const Vec<T, 3> &b)
+    {
+      return {{a[1] * b[2] - a[2] * b[1],
+               a[2] * b[0] - a[0] * b[2],
+               a[0] * b[1] - a[1] * b[0]}};
+    }
+
+    /// |(a - p) x (b - p)|^2 (2D: the squared scalar cross product).
+    template <typename T, int dim>
+    T
+    cross_square(const Vec<T, dim> &u, const Vec<T, dim> &v)
+    {
+      if constexpr (dim == 2)
+        {
+          const T c = u[0] * v[1] - u[1] * v[0];
+          return c * c;
+        }
+      else
+        {
+          const Vec<T, 3> c = cross(u, v);
+          return dot<T, 3>(c, c);
+        }
+    }
+
+    inline double
+    clamp01(const double s)
+    {
+      return s < 0. ? 0. : (s > 1. ? 1. : s);
+    }
+  } // namespace primitive_geometry
+
+  /// The squared distance of case @p c at @p x (any number type).
+  template <int dim, typename T, std::size_t n>
+  T
+  squared_distance(const DistanceCase &c, const std::array<T, n> &x)
+  {
+    using namespace primitive_geometry;
+    const Vec<T, dim> a = point<dim>(x, c.p[0]), b = point<dim>(x, c.p[1]);
+    switch (c.type)
+      {
+      case DistanceCase::point_point:
+        {
+          const Vec<T, dim> r = minus<T, dim>(a, b);
+          return dot<T, dim>(r, r);
+        }
+      case DistanceCase::point_line:
+        {
+          // a: the point; b, e: the line.
+          const Vec<T, dim> e = point<dim>(x, c.p[2]);
+          const Vec<T, dim> t = minus<T, dim>(e, b);
+          return cross_square<T, dim>(minus<T, dim>(b, a),
+                                      minus<T, dim>(e, a)) /
+                 dot<T, dim>(t, t);
+        }
+      case DistanceCase::point_plane:
+      case DistanceCase::line_line:
+        {
+          if constexpr (dim == 3)
+            {
+              // (r . n)^2 / |n|^2 with n = u x v: point-plane r = a - b,
+              // u, v the triangle's edges from b; line-line r = e - a, u, v
+              // the lines' directions.
+              const Vec<T, 3> e = point<3>(x, c.p[2]), f = point<3>(x, c.p[3]);
+              const bool      plane = c.type == DistanceCase::point_plane;
+              const Vec<T, 3> normal =
+                plane ? cross(minus<T, 3>(e, b), minus<T, 3>(f, b))
+                      : cross(minus<T, 3>(b, a), minus<T, 3>(f, e));
+              const T h =
+                dot<T, 3>(plane ? minus<T, 3>(a, b) : minus<T, 3>(e, a),
+                          normal);
+              return h * h / dot<T, 3>(normal, normal);
+            }
+          break;
+        }
+      }
+    return T(-1.);
+  }
+
+  /// Point [p, a, b] to segment a b (2D or 3D).
+  template <int dim, std::size_t n>
+  DistanceCase
+  classify_point_segment(const std::array<double, n> &x,
+                         const unsigned int           p = 0,
+                         const unsigned int           a = 1,
+                         const unsigned int           b = 2)
+  {
+    using namespace primitive_geometry;
+    const Vec<double, dim> e =
+      minus<double, dim>(point<dim>(x, b), point<dim>(x, a));
+    const double s =
+      dot<double, dim>(minus<double, dim>(point<dim>(x, p), point<dim>(x, a)),
+                       e) /
+      dot<double, dim>(e, e);
+    if (s <= 0.)
+      return {DistanceCase::point_point, {{p, a, 0, 0}}};
+    if (s >= 1.)
+      return {DistanceCase::point_point, {{p, b, 0, 0}}};
+    return {DistanceCase::point_line, {{p, a, b, 0}}};
+  }
+
+  /// Point [p, t0, t1, t2] to triangle (3D): the closest feature by the
+  /// Voronoi regions of the triangle's vertices, edges and face.
+  inline DistanceCase
+  classify_point_triangle(const std::array<double, 12> &x)
+  {
+    using namespace primitive_geometry;
+    const Vec<double, 3> p = point<3>(x, 0), a = point<3>(x, 1),
+                         b = point<3>(x, 2), c = point<3>(x, 3);
+    const Vec<double, 3> ab = minus<double, 3>(b, a),
+                         ac = minus<double, 3>(c, a);
+    const Vec<double, 3> ap = minus<double, 3>(p, a),
+                         bp = minus<double, 3>(p, b),
+                         cp = minus<double, 3>(p, c);
+    const double d1 = dot<double, 3>(ab, ap), d2 = dot<double, 3>(ac, ap);
+    if (d1 <= 0. && d2 <= 0.)
+      return {DistanceCase::point_point, {{0, 1, 0, 0}}};
+    const double d3 = dot<double, 3>(ab, bp), d4 = dot<double, 3>(ac, bp);
+    if (d3 >= 0. && d4 <= d3)
+      return {DistanceCase::point_point, {{0, 2, 0, 0}}};
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0. && d1 >= 0. && d3 <= 0.)
+      return {DistanceCase::point_line, {{0, 1, 2, 0}}};
+    const double d5 = dot<double, 3>(ab, cp), d6 = dot<double, 3>(ac, cp);
+    if (d6 >= 0. && d5 <= d6)
+      return {DistanceCase::point_point, {{0, 3, 0, 0}}};
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0. && d2 >= 0. && d6 <= 0.)
+      return {DistanceCase::point_line, {{0, 1, 3, 0}}};
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0. && d4 - d3 >= 0. && d5 - d6 >= 0.)
+      return {DistanceCase::point_line, {{0, 2, 3, 0}}};
+    return {DistanceCase::point_plane, {{0, 1, 2, 3}}};
+  }
+
+  /// Edge [a0, a1] to edge [b0, b1] (3D): the closest points' parameters
+  /// (clamped to the segments) decide; parallel edges (|ea x eb|^2 below
+  /// 1e-20 |ea|^2 |eb|^2) take the closest endpoint-edge case.
+  inline DistanceCase
+  classify_edge_edge(const std::array<double, 12> &x)
+  {
+    using namespace primitive_geometry;
+    const Vec<double, 3> a0 = point<3>(x, 0), a1 = point<3>(x, 1),
+                         b0 = point<3>(x, 2), b1 = point<3>(x, 3);
+    const Vec<double, 3> ea = minus<double, 3>(a1, a0),
+                         eb = minus<double, 3>(b1, b0),
+                         r  = minus<double, 3>(a0, b0);
+    const double aa = dot<double, 3>(ea, ea), bb = dot<double, 3>(eb, eb);
+    const double ab = dot<double, 3>(ea, eb), ar = dot<double, 3>(ea, r),
+                 br          = dot<double, 3>(eb, r);
+    const double denominator = aa * bb - ab * ab;
+    if (!(denominator > 1e-20 * aa * bb))
+      {
+        // Parallel: the smallest of the four endpoint-to-edge distances.
+        const DistanceCase candidates[4] = {
+          classify_point_segment<3>(x, 0, 2, 3),
+          classify_point_segment<3>(x, 1, 2, 3),
+          classify_point_segment<3>(x, 2, 0, 1),
+          classify_point_segment<3>(x, 3, 0, 1)};
+        DistanceCase best    = candidates[0];
+        double       closest = squared_distance<3>(best, x);
+        for (unsigned int k = 1; k < 4; ++k)
+          {
+            const double d2 = squared_distance<3>(candidates[k], x);
+            if (d2 < closest)
+              closest = d2, best = candidates[k];
+          }
+        return best;
+      }
+    // Closest points a0 + s ea, b0 + t eb of the segments.
+    double s = primitive_geometry::clamp01((ab * br - bb * ar) / denominator);
+    double t = (ab * s + br) / bb;
+    if (t < 0.)
+      t = 0., s = primitive_geometry::clamp01(-ar / aa);
+    else if (t > 1.)
+      t = 1., s = primitive_geometry::clamp01((ab - ar) / aa);
+    const int      sa = s <= 0. ? 0 : (s >= 1. ? 1 : -1);
+    const int      tb = t <= 0. ? 0 : (t >= 1. ? 1 : -1);
+    const unsigned pa = sa, pb = 2 + tb;
+    if (sa < 0 && tb < 0)
+      return {DistanceCase::line_line, {{0, 1, 2, 3}}};
+    if (sa < 0)
+      return {DistanceCase::point_line, {{pb, 0, 1, 0}}};
+    if (tb < 0)
+      return {DistanceCase::point_line, {{pa, 2, 3, 0}}};
+    return {DistanceCase::point_point, {{pa, pb, 0, 0}}};
+  }
+
+  /// The closest-feature case of a pair of @p n_points points in @p dim
+  /// dimensions (3 points in 2D: point-segment; in 3D @p edge_edge tells
+  /// the edge-edge pairs from the point-triangle ones).
+  template <int dim, std::size_t n>
+  DistanceCase
+  classify_pair(const std::array<double, n> &x, const bool edge_edge)
+  {
+    if constexpr (dim == 2)
+      {
+        (void)edge_edge;
+        return classify_point_segment<2>(x);
+      }
+    else
+      return edge_edge ? classify_edge_edge(x) : classify_point_triangle(x);
+  }
+
+  /// The edge-edge mollifier's c = |ea x eb|^2 at @p x (any number type).
+  template <typename T>
+  T
+  edge_cross_square(const std::array<T, 12> &x)
+  {
+    using namespace primitive_geometry;
+    return cross_square<T, 3>(minus<T, 3>(point<3>(x, 1), point<3>(x, 0)),
+                              minus<T, 3>(point<3>(x, 3), point<3>(x, 2)));
+  }
+
+  /// A pair's barrier energy and its derivatives in the pair's coordinates.
+  template <std::size_t n>
+  struct PairBarrier
+  {
+    double                distance = 0.;
+    double                energy   = 0.;
+    std::array<double, n> gradient{};
+    SmallMatrix<n>        hessian{};
+  };
+
+  /// The energy scale * m(x) * b(d(x), d_hat) of a pair at @p x in case
+  /// @p c, d = sqrt(squared_distance); the mollifier m only if
+  /// @p mollifier_eps > 0 (edge-edge: eps_x). With @p order 1 the
+  /// gradient, with 2 the Hessian too (not projected). Zero beyond d_hat;
+  /// +infinity energy if d <= 0.
+  template <int dim, std::size_t n>
+  PairBarrier<n>
+  pair_barrier(const std::array<double, n> &x,
+               const DistanceCase          &c,
+               const double                 d_hat,
+               const double                 scale,
+               const double                 mollifier_eps,
+               const unsigned int           order)
+  {
+    PairBarrier<n> result;
+    result.distance = std::sqrt(std::max(squared_distance<dim>(c, x), 0.));
+    if (!(result.distance > 0.))
+      {
+        result.energy = std::numeric_limits<double>::infinity();
+        return result;
+      }
+    if (result.distance >= d_hat)
+      return result;
+    const auto energy = [&](const auto &y) {
+      using T = typename std::decay_t<decltype(y)>::value_type;
+      using std::log;
+      using std::sqrt;
+      const T d = sqrt(squared_distance<dim>(c, y));
+      const T g = d - d_hat;
+      T       e = -scale * g * g * log(d / d_hat);
+      if constexpr (dim == 3)
+        if (mollifier_eps > 0.)
+          {
+            const T cs = edge_cross_square(y);
+            if (cs < mollifier_eps)
+              e = e * (2. - cs / mollifier_eps) * cs / mollifier_eps;
+          }
+      return e;
+    };
+    if (order == 0)
+      {
+        result.energy = energy(x);
+        return result;
+      }
+    if (order == 1)
+      {
+        using Fad = Sacado::Fad::SFad<double, n>;
+        std::array<Fad, n> y;
+        for (unsigned int i = 0; i < n; ++i)
+          y[i] = Fad(n, i, x[i]);
+        const Fad e   = energy(y);
+        result.energy = e.val();
+        for (unsigned int i = 0; i < n; ++i)
+          result.gradient[i] = e.dx(i);
+        return result;
+      }
+    using Inner = Sacado::Fad::SFad<double, n>;
+    using Outer = Sacado::Fad::SFad<Inner, n>;
+    std::array<Outer, n> y;
+    for (unsigned int i = 0; i < n; ++i)
+      y[i] = Outer(n, i, Inner(n, i, x[i]));
+    const Outer e = energy(y);
+    result.energy = e.val().val();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        result.gradient[i] = e.val().dx(i);
+        for (unsigned int j = 0; j < n; ++j)
+          result.hessian[i][j] = e.dx(i).dx(j);
+      }
+    return result;
+  }
+
+  /// @p matrix projected onto the positive semi-definite cone (its negative
+  /// eigenvalues set to zero).
+  template <std::size_t n>
+  SmallMatrix<n>
+  positive_semidefinite_part(const SmallMatrix<n> &matrix)
+  {
+    std::array<double, n> values;
+    SmallMatrix<n>        vectors;
+    jacobi_eigen_decomposition<n>(matrix, values, vectors);
+    SmallMatrix<n> result{};
+    for (unsigned int k = 0; k < n; ++k)
+      if (values[k] > 0.)
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            result[i][j] += values[k] * vectors[i][k] * vectors[j][k];
+    return result;
+  }
+} // namespace hyperelastic

@@ -1,0 +1,297 @@
+// Contact of the body's boundary with itself and between the bodies of one
+// mesh ('Contact/Self contact'), through the IPC barrier of the obstacles:
+//   V(u) = kappa sum over pairs k of w_k m_k(x) b(d_k(x), d_hat),
+// the pairs being every boundary vertex with every boundary segment (2D) or
+// triangle (3D) it is not a vertex of, and in 3D every two boundary edges
+// without a common vertex; d_k their distance (contact/primitive_distance.h),
+// m_k the edge-edge mollifier (1 for the others), w_k the vertex's share of
+// the boundary measure (edge-edge: the edge's third of its faces' areas).
+// Exact gradients and Hessians (automatic differentiation); each pair's
+// Hessian is projected to positive semi-definite when Newton asks for a
+// projected tangent (LoadTerm::request_positive_semidefinite: after the
+// exact one gave no descent direction), exact otherwise, so that Newton
+// keeps its quadratic convergence where it can.
+//
+// Broad phase: R-trees (boost, packed) over the deformed boundary's faces
+// and edges, built anew for every evaluation; the candidates are the pairs
+// whose boxes, inflated by d_hat, overlap. Feasible step: additive CCD
+// (contact/collision_detection.h) on every pair whose swept boxes overlap,
+// each keeping a tenth of its distance, so no iterate lets the boundary
+// pass through itself.
+//
+// MPI: every rank holds the whole boundary's connectivity (set up once) and
+// gathers the boundary vertices' displacements from their owners for every
+// evaluation (one MPI_Allgatherv of dim doubles per boundary vertex: the
+// exchange). A rank evaluates the pairs with a vertex it owns and writes its
+// owned rows only; a pair's energy is counted by the owner of its lowest
+// vertex. The tangent's sparsity grows with the pairs
+// (LoadTerm::needs_new_couplings). The answer does not depend on the number
+// of ranks.
+//
+// P2: the vertices only (flat faces between them), as for the obstacles.
+#pragma once
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+
+#include <hyperelastic/contact/contact_parameters.h>
+#include <hyperelastic/contact/primitive_distance.h>
+#include <hyperelastic/loads/load_term.h>
+#include <hyperelastic/materials/material.h>
+#include <hyperelastic/output/step_summary.h>
+
+#include <array>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hyperelastic
+{
+  template <int dim>
+  class SelfContact : public LoadTerm<dim>
+  {
+  public:
+    /// Gathers the boundary (collective), sets d_hat and kappa as the
+    /// obstacles do and checks the start: boundary primitives closer than
+    /// d_hat in the reference configuration are an InputError naming the
+    /// place.
+    SelfContact(const ContactParameters       &parameters,
+                const dealii::DoFHandler<dim> &dof_handler,
+                const LameParameters          &moduli);
+    ~SelfContact() override;
+
+    std::string
+    name() const override
+    {
+      return "Contact (self)";
+    }
+
+    bool
+    depends_on_solution() const override
+    {
+      return true;
+    }
+
+    bool
+    is_conservative() const override
+    {
+      return true;
+    }
+
+    /// Throws ConvergenceFailure on every rank if two primitives touch.
+    void
+    add_forces(const VectorType &u,
+               double            t,
+               VectorType       &forces) const override;
+
+    void
+    add_load_stiffness(const VectorType                        &u,
+                       double                                   t,
+                       const dealii::AffineConstraints<double> &constraints,
+                       MatrixType                              &matrix,
+                       VectorType &rhs) const override;
+
+    /// Each pair's Hessian exact (default) or projected to positive
+    /// semi-definite (Newton's projected tangent).
+    void
+    request_positive_semidefinite(const bool positive_semidefinite) override
+    {
+      project_pairs = positive_semidefinite;
+    }
+
+    /// kappa sum w m b; +infinity if two primitives touch.
+    double
+    potential(const VectorType &u, double t) const override;
+
+    /// The largest step along @p direction that keeps every pair at a
+    /// tenth of its distance (additive CCD).
+    double
+    largest_feasible_step(const VectorType &u,
+                          const VectorType &direction,
+                          double            t) const override;
+
+    void
+    begin_step(const VectorType &u, double t_start) override;
+    void
+    set_end_state_map(double c) override
+    {
+      end_factor = c;
+    }
+
+    bool
+    needs_new_couplings(const VectorType &u, double t) override;
+    void
+    add_couplings(dealii::DynamicSparsityPattern &pattern) const override;
+
+    /// Merges the self pairs into the CSV columns contact_min_distance
+    /// (capped at d_hat) and contact_active_pairs (adding them if the
+    /// obstacles did not). Collective.
+    void
+    summarize(const VectorType &u, StepSummary<dim> &summary) const;
+
+    /// Adds the nodal contact forces of the self pairs at @p u (owned
+    /// entries). Collective.
+    void
+    contact_forces(const VectorType &u, VectorType &forces) const;
+
+    double
+    barrier_distance() const
+    {
+      return d_hat;
+    }
+
+    double
+    barrier_stiffness() const
+    {
+      return kappa;
+    }
+
+    /// Boundary vertices, faces (segments in 2D) and edges (3D), global.
+    std::array<unsigned int, 3>
+    boundary_size() const
+    {
+      return {{static_cast<unsigned int>(vertices.size()),
+               static_cast<unsigned int>(faces.size()),
+               static_cast<unsigned int>(edges.size())}};
+    }
+
+    /// Accumulated wall time of the parts (this rank): the positions'
+    /// exchange, the broad phase (trees and queries), the narrow phase
+    /// (distances, barrier and derivatives, assembly) and CCD; and the
+    /// number of evaluations.
+    struct Cost
+    {
+      double       exchange = 0., broad = 0., narrow = 0., ccd = 0.;
+      unsigned int evaluations = 0, sparsity_rebuilds = 0;
+    };
+    const Cost &
+    cost() const
+    {
+      return spent;
+    }
+
+    /// Times the term's work in the section "contact" of @p timer.
+    void
+    set_timer(dealii::TimerOutput &timer)
+    {
+      this->timer = &timer;
+    }
+
+  private:
+    static constexpr unsigned int n_points      = dim + 1;
+    static constexpr std::size_t  n_coordinates = n_points * dim;
+    using Coordinates = std::array<double, n_coordinates>;
+
+    struct Vertex
+    {
+      dealii::Point<dim>                               X;
+      std::array<dealii::types::global_dof_index, dim> dofs;
+      double                                           area  = 0.;
+      unsigned int                                     owner = 0;
+    };
+
+    /// A candidate pair: point-segment [p, a, b] (2D), point-triangle
+    /// [p, t0, t1, t2] or edge-edge [a0, a1, b0, b1] (3D).
+    struct Pair
+    {
+      std::array<unsigned int, n_points> v;
+      bool                               edge_edge = false;
+      double                             weight    = 0.; ///< w
+      double mollifier = 0.; ///< eps_x (edge-edge), 0 otherwise
+    };
+
+    /// The boxes of every vertex, face and edge, around the positions @p x
+    /// (and x + @p p if given: the swept boxes) inflated by @p margin.
+    struct Boxes
+    {
+      std::vector<dealii::BoundingBox<dim>> vertex, face, edge;
+    };
+    Boxes
+    boxes(const std::vector<dealii::Point<dim>>     &x,
+          const std::vector<dealii::Tensor<1, dim>> *p,
+          double                                     margin) const;
+
+    /// Every pair whose boxes overlap and that has a vertex this rank owns,
+    /// once.
+    std::vector<Pair>
+    candidates(const Boxes &b) const;
+
+    /// The positions of all boundary vertices in the state @p u (gathered
+    /// from their owners; the end-state map applied). Collective.
+    std::vector<dealii::Point<dim>>
+    positions(const VectorType &u) const;
+
+    /// dim values per boundary vertex from the owners: @p local(k, d) of
+    /// the owned vertices, gathered. Collective.
+    template <typename F>
+    std::vector<double>
+    gather(const F &local) const;
+
+    Coordinates
+    coordinates(const Pair                            &pair,
+                const std::vector<dealii::Point<dim>> &x) const;
+
+    /// Calls @p f(pair, barrier) for every candidate pair closer than d_hat
+    /// at @p x (derivatives up to @p order); returns whether a pair
+    /// touches (distance <= 0). Also gives the smallest distance (capped
+    /// at d_hat) in @p min_distance if not null.
+    template <typename F>
+    bool
+    for_each_active(const std::vector<dealii::Point<dim>> &x,
+                    unsigned int                           order,
+                    const F                               &f,
+                    double *min_distance = nullptr) const;
+
+    /// Whether this rank counts the pair (owns its lowest vertex).
+    bool
+    counted_here(const Pair &pair) const
+    {
+      unsigned int lowest = pair.v[0];
+      for (const unsigned int v : pair.v)
+        lowest = std::min(lowest, v);
+      return vertices[lowest].owner == rank;
+    }
+
+    /// The forces g = -dV/du of the active pairs on the owned rows.
+    void
+    add_pair_forces(const VectorType &u, VectorType &forces) const;
+
+    const MPI_Comm                             comm;
+    const unsigned int                         rank;
+    std::vector<Vertex>                        vertices;
+    std::vector<std::array<unsigned int, dim>> faces;
+    /// 3D: the boundary edges, their weights (a third of each adjacent
+    /// face's area) and squared rest lengths.
+    std::vector<std::array<unsigned int, 2>> edges;
+    std::vector<double>                      edge_area, edge_length2;
+    /// The owned boundary vertices: [first_owned, first_owned + n_owned),
+    /// and the MPI_Allgatherv layout (dim doubles per vertex, rank order).
+    unsigned int     first_owned = 0, n_owned = 0;
+    std::vector<int> counts, displacements;
+
+    double d_hat = 0., kappa = 0.;
+    double end_factor    = 1.;
+    bool   project_pairs = false;
+    /// Boundary positions at the step's start (for the end-state map).
+    std::vector<dealii::Point<dim>> start_positions;
+    /// The vertex couplings (owned vertex, other vertex) in the tangent's
+    /// sparsity.
+    std::set<std::pair<unsigned int, unsigned int>> reserved;
+
+    mutable Cost         spent;
+    dealii::TimerOutput *timer = nullptr;
+    std::optional<dealii::TimerOutput::Scope>
+    timed() const
+    {
+      if (timer)
+        return std::optional<dealii::TimerOutput::Scope>(std::in_place,
+                                                         *timer,
+                                                         "contact");
+      return std::nullopt;
+    }
+  };
+} // namespace hyperelastic

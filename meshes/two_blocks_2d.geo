@@ -1,0 +1,18 @@
+// Two separate blocks (plane strain), one mesh: the lower [0,1] x [0,0.5]
+// and the upper [0.25,0.75] x [0.52,1.02], 0.02 apart.
+// Physical tags (boundary ids): 1 the lower block's bottom y = 0, 2 the
+// upper block's top y = 1.02; surface tags 1 (lower) and 2 (upper).
+// Regenerate: gmsh -2 -format msh41 two_blocks_2d.geo -o two_blocks_2d.msh
+SetFactory("OpenCASCADE");
+If (!Exists(h))
+  h = 0.1;
+EndIf
+Rectangle(1) = {0, 0, 0, 1, 0.5};
+Rectangle(2) = {0.25, 0.52, 0, 0.5, 0.5};
+Mesh.CharacteristicLengthMin = h;
+Mesh.CharacteristicLengthMax = h;
+eps = 1e-6;
+Physical Curve(1) = Curve In BoundingBox{-eps, -eps, -eps, 1 + eps, eps, eps};
+Physical Curve(2) = Curve In BoundingBox{0.25 - eps, 1.02 - eps, -eps, 0.75 + eps, 1.02 + eps, eps};
+Physical Surface(1) = {1};
+Physical Surface(2) = {2};
