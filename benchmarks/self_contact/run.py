@@ -15,19 +15,21 @@ top at speed 0.5, backward Euler with time step 0.05,
           of self-contact, broad phase, CCD and exchange, on every Newton
           iteration), for every size;
 
-and parses the run's timing table (sections "assembly", "residual",
-"contact") and its line "self contact: ... evaluations; wall time: exchange
-... broad phase ... narrow phase ... CCD ..." (rank 0). Writes
+and parses the run's timing table (sections "assembly", "residual") and its
+line "self contact: ... evaluations; wall time: exchange ... broad phase ...
+narrow phase ... CCD ..." (rank 0). The elastic assembly per Newton iteration
+(tangent + residual) comes from the same mesh's 'start' run without
+self-contact. Writes
 
-  cost.csv  per run: scene, h, ranks, unknowns, boundary vertices, Newton
-            iterations, the exchanged doubles per evaluation (every rank
-            receives them all), wall times (s) of the elastic assembly
-            (assembly + residual - contact), of contact, of its parts, and
-            the ratio contact / elastic assembly
+  cost.csv  per run: scene, h, ranks, unknowns, boundary vertices, the
+            exchanged doubles per evaluation (every rank receives them all),
+            Newton iterations, self-contact evaluations per iteration, and
+            per Newton iteration (s): the elastic assembly, self-contact and
+            its parts, with the ratio self-contact / elastic assembly
   cost.png
 
-  python3 benchmarks/self_contact/run.py           # all sizes (~30 min)
-  python3 benchmarks/self_contact/run.py --quick   # h = 0.15 only (~1 min)
+  /usr/bin/python3 benchmarks/self_contact/run.py           # all sizes (~30 min)
+  /usr/bin/python3 benchmarks/self_contact/run.py --quick   # h = 0.15 only (~1 min)
   python3 benchmarks/self_contact/run.py --plot    # redraw from cost.csv
 """
 import argparse
@@ -43,11 +45,11 @@ MPIRUN = os.path.join(ROOT, "scripts", "mpirun.sh")
 GEO = os.path.join(ROOT, "meshes", "hollow_ball_3d.geo")
 MESHES = os.path.join(HERE, "meshes")
 COST = os.path.join(HERE, "cost.csv")
-# (h, scenes): 4e3 ... 1e6 unknowns.
-SIZES = [(0.15, ("squash", "start")), (0.1, ("squash", "start")),
-         (0.07, ("start",)), (0.045, ("start",)), (0.03, ("start",)),
-         (0.022, ("start",))]
-QUICK_SIZES = [(0.15, ("squash", "start"))]
+# (h, scenes, ranks): 4e3 ... 5e5 unknowns.
+SIZES = [(0.15, ("squash", "start"), (1, 2)), (0.1, ("start",), (1, 2)),
+         (0.07, ("start",), (1, 2)), (0.045, ("start",), (1, 2)),
+         (0.03, ("start",), (2,))]
+QUICK_SIZES = [(0.15, ("start",), (1, 2))]
 
 SCENE = """
 subsection Problem
@@ -75,7 +77,7 @@ subsection Dirichlet 1
 end
 subsection Contact
   set Barrier distance = 0.004
-  set Self contact     = true
+  set Self contact     = {self_contact}
   subsection Obstacle 1
     set Type   = plane
     set Point  = 0, 0, 1.002
@@ -108,36 +110,58 @@ def seconds(text, section):
     return float(m.group(1)) if m else 0.
 
 
-def run(h, scene, ranks):
+def run(h, scene, ranks, self_contact=True):
     out = os.path.join(HERE, "out")
     end = 3. if scene == "squash" else 0.1
     prm = os.path.join(HERE, "scene.prm")
     with open(prm, "w") as f:
-        f.write(SCENE.format(mesh=mesh(h), end=end, out=out))
+        f.write(SCENE.format(mesh=mesh(h), end=end, out=out,
+                             self_contact=str(self_contact).lower()))
     text = subprocess.run([MPIRUN, "-np", str(ranks), EXE, prm], check=True,
                           capture_output=True, text=True).stdout
-    unknowns = int(re.search(r"(\d+) unknowns", text).group(1))
-    vertices = int(re.search(r"self contact: (\d+) boundary vertices",
-                             text).group(1))
-    cost = re.search(r"self contact: (\d+) evaluations; wall time: exchange "
-                     r"(\S+) s, broad phase (\S+) s, narrow phase (\S+) s, "
-                     r"CCD (\S+) s", text)
     with open(os.path.join(out, "hollow_ball.csv")) as f:
         iterations = sum(int(r["newton_iterations"])
                          for r in csv.DictReader(f))
-    contact = seconds(text, "contact")
-    elastic = seconds(text, "assembly") + seconds(text, "residual") - contact
-    return {"scene": scene, "h": h, "ranks": ranks, "unknowns": unknowns,
-            "boundary_vertices": vertices,
-            "newton_iterations": iterations,
-            "exchanged_doubles": 3 * vertices,
-            "evaluations": int(cost.group(1)),
-            "t_elastic_assembly": round(elastic, 4),
-            "t_contact": round(contact, 4),
-            "t_exchange": float(cost.group(2)),
-            "t_broad": float(cost.group(3)),
-            "t_narrow": float(cost.group(4)),
-            "t_ccd": float(cost.group(5)),
+    result = {"unknowns": int(re.search(r"(\d+) unknowns", text).group(1)),
+              "newton_iterations": iterations,
+              "t_assembly": seconds(text, "assembly"),
+              "t_residual": seconds(text, "residual")}
+    if self_contact:
+        result["boundary_vertices"] = int(re.search(
+            r"self contact: (\d+) boundary vertices", text).group(1))
+        cost = re.search(r"self contact: (\d+) evaluations; wall time: "
+                         r"exchange (\S+) s, broad phase (\S+) s, narrow "
+                         r"phase (\S+) s, CCD (\S+) s", text)
+        result["evaluations"] = int(cost.group(1))
+        for k, name in enumerate(["exchange", "broad", "narrow", "ccd"]):
+            result["t_" + name] = float(cost.group(k + 2))
+    return result
+
+
+def measure(h, scene, ranks):
+    """Self-contact's time per Newton iteration (its four parts, rank 0)
+    against the elastic assembly's (tangent + residual) per Newton iteration
+    of the same mesh without self-contact ('start', 2 time steps)."""
+    on = run(h, scene, ranks)
+    off = run(h, "start", ranks, self_contact=False)
+    per_it = lambda r, t: t / r["newton_iterations"]
+    elastic = per_it(off, off["t_assembly"] + off["t_residual"])
+    parts = {k: per_it(on, on["t_" + k])
+             for k in ("exchange", "broad", "narrow", "ccd")}
+    contact = sum(parts.values())
+    return {"scene": scene, "h": h, "ranks": ranks,
+            "unknowns": on["unknowns"],
+            "boundary_vertices": on["boundary_vertices"],
+            "exchanged_doubles": 3 * on["boundary_vertices"],
+            "newton_iterations": on["newton_iterations"],
+            "evaluations_per_iteration":
+                round(on["evaluations"] / on["newton_iterations"], 2),
+            "elastic_assembly_per_iteration": round(elastic, 6),
+            "contact_per_iteration": round(contact, 6),
+            "exchange_per_iteration": round(parts["exchange"], 6),
+            "broad_per_iteration": round(parts["broad"], 6),
+            "narrow_per_iteration": round(parts["narrow"], 6),
+            "ccd_per_iteration": round(parts["ccd"], 6),
             "contact_over_assembly": round(contact / elastic, 4)}
 
 
@@ -175,10 +199,10 @@ def main():
     args = parser.parse_args()
     if not args.plot:
         rows = []
-        for h, scenes in (QUICK_SIZES if args.quick else SIZES):
+        for h, scenes, rank_counts in (QUICK_SIZES if args.quick else SIZES):
             for scene in scenes:
-                for ranks in (1, 2):
-                    r = run(h, scene, ranks)
+                for ranks in rank_counts:
+                    r = measure(h, scene, ranks)
                     print(r, flush=True)
                     rows.append(r)
         with open(COST, "w", newline="") as f:

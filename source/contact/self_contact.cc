@@ -393,10 +393,16 @@ namespace hyperelastic
                                     double *min_distance) const
   {
     ++spent.evaluations;
-    const std::vector<Pair> pairs = candidates(boxes(x, nullptr, d_hat));
-    Stopwatch               watch(spent.narrow);
-    bool                    touching = false;
-    double                  closest  = d_hat;
+    // The forces, stiffness and energy of one state share its candidates.
+    if (x != candidates_at)
+      {
+        near_pairs    = candidates(boxes(x, nullptr, d_hat));
+        candidates_at = x;
+      }
+    const std::vector<Pair> &pairs = near_pairs;
+    Stopwatch                watch(spent.narrow);
+    bool                     touching = false;
+    double                   closest  = d_hat;
     for (const Pair &pair : pairs)
       {
         const Coordinates          c = coordinates(pair, x);

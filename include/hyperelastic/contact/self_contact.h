@@ -282,6 +282,10 @@ namespace hyperelastic
     /// sparsity.
     std::set<std::pair<unsigned int, unsigned int>> reserved;
 
+    /// The candidates within d_hat of the last evaluated positions.
+    mutable std::vector<dealii::Point<dim>> candidates_at;
+    mutable std::vector<Pair>               near_pairs;
+
     mutable Cost         spent;
     dealii::TimerOutput *timer = nullptr;
     std::optional<dealii::TimerOutput::Scope>
