@@ -203,8 +203,8 @@ namespace hyperelastic
               << size[1] << (dim == 2 ? " segments" : " triangles");
         if (dim == 3)
           pcout << ", " << size[2] << " edges";
-        pcout << " on every rank (exchange: " << dim * size[0]
-              << " doubles per evaluation), barrier distance d_hat = "
+        pcout << " (connectivity on every rank; positions exchanged with "
+                 "the ranks within reach), barrier distance d_hat = "
               << self_contact->barrier_distance()
               << ", barrier stiffness kappa = "
               << self_contact->barrier_stiffness() << std::endl;
@@ -351,7 +351,9 @@ namespace hyperelastic
               << " evaluations; wall time: exchange " << c.exchange
               << " s, broad phase " << c.broad << " s, narrow phase "
               << c.narrow << " s, CCD " << c.ccd << " s; "
-              << c.sparsity_rebuilds << " sparsity rebuilds" << std::endl;
+              << c.sparsity_rebuilds << " sparsity rebuilds; "
+              << c.received / std::max(c.evaluations, 1u)
+              << " doubles received per evaluation" << std::endl;
       }
     pcout << "\nSummary per load step: " << writer->csv_file();
     if (parameters.output.write_vtu)

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <iterator>
 #include <limits>
 #include <map>
@@ -110,9 +111,6 @@ namespace hyperelastic
             index.emplace(v.dofs[0], vertices.size());
             vertices.push_back(v);
           }
-        counts.push_back(all_vertices[r].size() / 2);
-        displacements.push_back(r == 0 ? 0
-                                       : displacements[r - 1] + counts[r - 1]);
         if (r == rank)
           n_owned = vertices.size() - first_owned;
       }
@@ -136,6 +134,10 @@ namespace hyperelastic
                       .norm();
           for (const unsigned int v : face)
             vertices[v].area += measure / dim;
+          for (unsigned int k = 0; k < dim; ++k)
+            longest_edge = std::max(longest_edge,
+                                    vertices[face[k]].X.distance(
+                                      vertices[face[(k + 1) % dim]].X));
           faces.push_back(face);
           if constexpr (dim == 3)
             for (unsigned int k = 0; k < 3; ++k)
@@ -220,45 +222,141 @@ namespace hyperelastic
   SelfContact<dim>::~SelfContact() = default;
 
   template <int dim>
-  template <typename F>
   std::vector<double>
-  SelfContact<dim>::gather(const F &local) const
+  SelfContact<dim>::exchange(const SendLists           &send,
+                             const std::vector<double> &owned_values,
+                             const unsigned int         m) const
   {
     Stopwatch           watch(spent.exchange);
-    std::vector<double> mine(n_owned * dim), all(vertices.size() * dim);
-    for (unsigned int k = 0; k < n_owned; ++k)
-      for (unsigned int d = 0; d < dim; ++d)
-        mine[k * dim + d] = local(first_owned + k, d);
-    const int ierr = MPI_Allgatherv(mine.data(),
-                                    static_cast<int>(mine.size()),
-                                    MPI_DOUBLE,
-                                    all.data(),
-                                    counts.data(),
-                                    displacements.data(),
-                                    MPI_DOUBLE,
-                                    comm);
-    AssertThrowMPI(ierr);
+    std::vector<double> all(vertices.size() * m,
+                            std::numeric_limits<double>::quiet_NaN());
+    std::copy(owned_values.begin(),
+              owned_values.end(),
+              all.begin() + std::size_t(first_owned) * m);
+    std::map<unsigned int, std::vector<double>> out;
+    for (const auto &[q, list] : send)
+      {
+        std::vector<double> &data = out[q];
+        for (const unsigned int k : list)
+          {
+            data.push_back(first_owned + k);
+            data.insert(data.end(),
+                        owned_values.begin() + std::size_t(k) * m,
+                        owned_values.begin() + std::size_t(k + 1) * m);
+          }
+      }
+    for (const auto &[q, data] : Utilities::MPI::some_to_some(comm, out))
+      {
+        spent.received += data.size();
+        for (std::size_t i = 0; i < data.size(); i += m + 1)
+          std::copy(data.begin() + i + 1,
+                    data.begin() + i + 1 + m,
+                    all.begin() + std::size_t(data[i]) * m);
+      }
     return all;
+  }
+
+  template <int dim>
+  typename SelfContact<dim>::State
+  SelfContact<dim>::state(const VectorType &u,
+                          const VectorType *direction,
+                          const double      reach) const
+  {
+    // The owned vertices' positions (end-state map applied) and motions.
+    const unsigned int  m = direction ? 2 * dim : dim;
+    std::vector<double> owned(std::size_t(n_owned) * m);
+    for (unsigned int k = 0; k < n_owned; ++k)
+      {
+        const Vertex &v = vertices[first_owned + k];
+        Point<dim>    x = v.X;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] += u(v.dofs[d]);
+        if (end_factor != 1.)
+          x = start_positions[first_owned + k] +
+              end_factor * (x - start_positions[first_owned + k]);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            owned[k * m + d] = x[d];
+            if (direction)
+              owned[k * m + dim + d] = end_factor * (*direction)(v.dofs[d]);
+          }
+      }
+    // This rank's region: the box of its vertices (swept along the motion),
+    // inflated by the reach and twice the longest boundary edge, so that
+    // every primitive within reach of its own arrives whole; doubled while
+    // a primitive with an owned vertex is incomplete (stretched edges).
+    State  s;
+    double margin = reach + 2. * longest_edge;
+    for (unsigned int attempt = 0;; ++attempt)
+      {
+        std::vector<std::array<double, 2 * dim>> box(n_owned);
+        std::array<double, 2 * dim>              region;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            region[d]       = std::numeric_limits<double>::max();
+            region[dim + d] = -std::numeric_limits<double>::max();
+          }
+        for (unsigned int k = 0; k < n_owned; ++k)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double a  = owned[k * m + d],
+                           b  = a + (direction ? owned[k * m + dim + d] : 0.);
+              box[k][d]       = std::min(a, b);
+              box[k][dim + d] = std::max(a, b);
+              region[d]       = std::min(region[d], box[k][d] - margin);
+              region[dim + d] =
+                std::max(region[dim + d], box[k][dim + d] + margin);
+            }
+        {
+          Stopwatch  watch(spent.exchange);
+          const auto regions = Utilities::MPI::all_gather(comm, region);
+          s.send.clear();
+          for (unsigned int q = 0; q < regions.size(); ++q)
+            if (q != rank)
+              for (unsigned int k = 0; k < n_owned; ++k)
+                {
+                  bool inside = true;
+                  for (unsigned int d = 0; d < dim && inside; ++d)
+                    inside = box[k][dim + d] >= regions[q][d] &&
+                             box[k][d] <= regions[q][dim + d];
+                  if (inside)
+                    s.send[q].push_back(k);
+                }
+        }
+        const std::vector<double> all = exchange(s.send, owned, m);
+        s.x.assign(vertices.size(), Point<dim>());
+        s.p.assign(direction ? vertices.size() : 0, Tensor<1, dim>());
+        for (unsigned int k = 0; k < vertices.size(); ++k)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              s.x[k][d] = all[std::size_t(k) * m + d];
+              if (direction)
+                s.p[k][d] = all[std::size_t(k) * m + dim + d];
+            }
+        bool       complete = true;
+        const auto check    = [&](const auto &list) {
+          bool mine = false, whole = true;
+          for (const unsigned int v : list)
+            {
+              mine  = mine || vertices[v].owner == rank;
+              whole = whole && !std::isnan(s.x[v][0]);
+            }
+          complete = complete && (!mine || whole);
+        };
+        for (const auto &f : faces)
+          check(f);
+        if (Utilities::MPI::min(complete ? 1 : 0, comm) == 1 || attempt > 20)
+          break;
+        margin *= 2.;
+      }
+    return s;
   }
 
   template <int dim>
   std::vector<Point<dim>>
   SelfContact<dim>::positions(const VectorType &u) const
   {
-    const std::vector<double> displacement =
-      gather([&](const unsigned int k, const unsigned int d) {
-        return u(vertices[k].dofs[d]);
-      });
-    std::vector<Point<dim>> x(vertices.size());
-    for (unsigned int k = 0; k < vertices.size(); ++k)
-      {
-        x[k] = vertices[k].X;
-        for (unsigned int d = 0; d < dim; ++d)
-          x[k][d] += displacement[k * dim + d];
-        if (end_factor != 1.)
-          x[k] = start_positions[k] + end_factor * (x[k] - start_positions[k]);
-      }
-    return x;
+    return state(u, nullptr, d_hat).x;
   }
 
   template <int dim>
@@ -309,6 +407,13 @@ namespace hyperelastic
     const auto shares = [](const auto &list, const unsigned int v) {
       return std::find(list.begin(), list.end(), v) != list.end();
     };
+    // The vertices this rank has not received (far from its own) are NaN.
+    const auto known = [&](const unsigned int v) {
+      return !std::isnan(b.vertex[v].get_boundary_points().first[0]);
+    };
+    const auto all_known = [&](const auto &list) {
+      return std::all_of(list.begin(), list.end(), known);
+    };
     std::vector<Pair> result;
 
     // Vertex-face pairs: the owned vertices against every face, and every
@@ -316,11 +421,14 @@ namespace hyperelastic
     {
       std::vector<Entry> entries;
       for (unsigned int f = 0; f < faces.size(); ++f)
-        entries.emplace_back(b.face[f], f);
+        if (all_known(faces[f]))
+          entries.emplace_back(b.face[f], f);
       const RTree<Entry> tree = pack_rtree(entries);
       std::vector<Entry> found;
       for (unsigned int v = 0; v < vertices.size(); ++v)
         {
+          if (!known(v))
+            continue;
           found.clear();
           tree.query(boost::geometry::index::intersects(b.vertex[v]),
                      std::back_inserter(found));
@@ -344,12 +452,13 @@ namespace hyperelastic
       {
         std::vector<Entry> entries;
         for (unsigned int e = 0; e < edges.size(); ++e)
-          entries.emplace_back(b.edge[e], e);
+          if (all_known(edges[e]))
+            entries.emplace_back(b.edge[e], e);
         const RTree<Entry> tree = pack_rtree(entries);
         std::vector<Entry> found;
         for (unsigned int e = 0; e < edges.size(); ++e)
           {
-            if (!any_mine(edges[e]))
+            if (!any_mine(edges[e]) || !all_known(edges[e]))
               continue;
             found.clear();
             tree.query(boost::geometry::index::intersects(b.edge[e]),
@@ -394,7 +503,10 @@ namespace hyperelastic
   {
     ++spent.evaluations;
     // The forces, stiffness and energy of one state share its candidates.
-    if (x != candidates_at)
+    // (Bitwise: the vertices not received here are NaN.)
+    if (x.size() != candidates_at.size() ||
+        std::memcmp(x.data(), candidates_at.data(), x.size() * sizeof(x[0])) !=
+          0)
       {
         near_pairs    = candidates(boxes(x, nullptr, d_hat));
         candidates_at = x;
@@ -484,20 +596,25 @@ namespace hyperelastic
     VectorType                      &rhs) const
   {
     const auto scope = timed();
-    // The prescribed value of every boundary dof (NaN where free), from its
-    // owner: a pair's far vertices may be constrained on another rank.
-    const std::vector<double> prescribed =
-      gather([&](const unsigned int k, const unsigned int d) {
-        const types::global_dof_index dof = vertices[k].dofs[d];
-        return constraints.is_constrained(dof)
-                 ? constraints.get_inhomogeneity(dof)
-                 : std::numeric_limits<double>::quiet_NaN();
-      });
+    // The prescribed value of every boundary dof near here (NaN where
+    // free), from its owner: a pair's far vertices may be constrained on
+    // another rank.
+    const State         s = state(u, nullptr, d_hat);
+    std::vector<double> owned(std::size_t(n_owned) * dim);
+    for (unsigned int k = 0; k < n_owned; ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const types::global_dof_index dof = vertices[first_owned + k].dofs[d];
+          owned[k * dim + d]                = constraints.is_constrained(dof)
+                                                ? constraints.get_inhomogeneity(dof)
+                                                : std::numeric_limits<double>::quiet_NaN();
+        }
+    const std::vector<double> prescribed = exchange(s.send, owned, dim);
     std::vector<types::global_dof_index> rhs_rows;
     std::vector<double>                  rhs_values;
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
-    for_each_active(positions(u), 2, [&](const Pair &pair, const auto &b) {
+    for_each_active(s.x, 2, [&](const Pair &pair, const auto &b) {
       const SmallMatrix<n_coordinates> K =
         project_pairs ? positive_semidefinite_part<n_coordinates>(b.hessian)
                       : b.hessian;
@@ -563,19 +680,13 @@ namespace hyperelastic
                                           const VectorType &direction,
                                           const double) const
   {
-    const auto                    scope = timed();
-    const std::vector<Point<dim>> x     = positions(u);
-    const std::vector<double>     motion =
-      gather([&](const unsigned int k, const unsigned int d) {
-        return end_factor * direction(vertices[k].dofs[d]);
-      });
-    std::vector<Tensor<1, dim>> p(vertices.size());
-    for (unsigned int k = 0; k < vertices.size(); ++k)
-      for (unsigned int d = 0; d < dim; ++d)
-        p[k][d] = motion[k * dim + d];
-    const std::vector<Pair> pairs = candidates(boxes(x, &p, d_hat));
-    Stopwatch               watch(spent.ccd);
-    double                  alpha = 1.;
+    const auto                         scope = timed();
+    const State                        s     = state(u, &direction, d_hat);
+    const std::vector<Point<dim>>     &x     = s.x;
+    const std::vector<Tensor<1, dim>> &p     = s.p;
+    const std::vector<Pair>            pairs = candidates(boxes(x, &p, d_hat));
+    Stopwatch                          watch(spent.ccd);
+    double                             alpha = 1.;
     for (const Pair &pair : pairs)
       {
         const Coordinates c = coordinates(pair, x);
@@ -603,8 +714,9 @@ namespace hyperelastic
   SelfContact<dim>::needs_new_couplings(const VectorType &u, const double)
   {
     const auto                    scope = timed();
-    const std::vector<Point<dim>> x     = positions(u);
-    bool                          grew  = false;
+    const std::vector<Point<dim>> x =
+      state(u, nullptr, coupling_reach * d_hat).x;
+    bool grew = false;
     for_each_active(x, 0, [&](const Pair &pair, const auto &) {
       for (const unsigned int a : pair.v)
         if (vertices[a].owner == rank)

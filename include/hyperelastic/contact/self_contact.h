@@ -19,12 +19,14 @@
 // each keeping a tenth of its distance, so no iterate lets the boundary
 // pass through itself.
 //
-// MPI: every rank holds the whole boundary's connectivity (set up once) and
-// gathers the boundary vertices' displacements from their owners for every
-// evaluation (one MPI_Allgatherv of dim doubles per boundary vertex: the
-// exchange). A rank evaluates the pairs with a vertex it owns and writes its
-// owned rows only; a pair's energy is counted by the owner of its lowest
-// vertex. The tangent's sparsity grows with the pairs
+// MPI: every rank holds the whole boundary's connectivity (set up once:
+// integers and reference coordinates) and, for every evaluation, the
+// positions of its own boundary vertices plus those of the other ranks'
+// vertices that lie within reach of its own (each rank publishes the box of
+// its vertices; the owners send what falls in another rank's inflated box,
+// point to point). A rank evaluates the pairs with a vertex it owns and
+// writes its owned rows only; a pair's energy is counted by the owner of its
+// lowest vertex. The tangent's sparsity grows with the pairs
 // (LoadTerm::needs_new_couplings). The answer does not depend on the number
 // of ranks.
 //
@@ -43,6 +45,7 @@
 #include <hyperelastic/output/step_summary.h>
 
 #include <array>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -167,6 +170,8 @@ namespace hyperelastic
     {
       double       exchange = 0., broad = 0., narrow = 0., ccd = 0.;
       unsigned int evaluations = 0, sparsity_rebuilds = 0;
+      /// The values (doubles) this rank received from the others.
+      double received = 0.;
     };
     const Cost &
     cost() const
@@ -220,16 +225,39 @@ namespace hyperelastic
     std::vector<Pair>
     candidates(const Boxes &b) const;
 
-    /// The positions of all boundary vertices in the state @p u (gathered
-    /// from their owners; the end-state map applied). Collective.
+    /// Which of its owned boundary vertices (offsets from first_owned) this
+    /// rank sends to which other rank.
+    using SendLists = std::map<unsigned int, std::vector<unsigned int>>;
+
+    /// The boundary vertices this rank knows in a state: its own and those
+    /// the other ranks sent (NaN for the others).
+    struct State
+    {
+      std::vector<dealii::Point<dim>> x; ///< positions (end-state map applied)
+      std::vector<dealii::Tensor<1, dim>>
+                p; ///< motions (end-state map applied)
+      SendLists send;
+    };
+
+    /// The state @p u (and the motion @p direction, if given): each rank
+    /// sends its owned vertices that lie (or move) within the region of
+    /// another rank, the box of that rank's vertices inflated by @p reach
+    /// plus twice the longest boundary edge (more where a stretched
+    /// primitive of its own arrived incomplete). Collective.
+    State
+    state(const VectorType &u, const VectorType *direction, double reach) const;
+
+    /// The positions this rank knows in the state @p u. Collective.
     std::vector<dealii::Point<dim>>
     positions(const VectorType &u) const;
 
-    /// dim values per boundary vertex from the owners: @p local(k, d) of
-    /// the owned vertices, gathered. Collective.
-    template <typename F>
+    /// @p m values per vertex, @p owned_values of the owned vertices, sent
+    /// as @p send says: the values of all vertices known here (NaN for the
+    /// others). Collective.
     std::vector<double>
-    gather(const F &local) const;
+    exchange(const SendLists           &send,
+             const std::vector<double> &owned_values,
+             unsigned int               m) const;
 
     Coordinates
     coordinates(const Pair                            &pair,
@@ -268,10 +296,11 @@ namespace hyperelastic
     /// face's area) and squared rest lengths.
     std::vector<std::array<unsigned int, 2>> edges;
     std::vector<double>                      edge_area, edge_length2;
-    /// The owned boundary vertices: [first_owned, first_owned + n_owned),
-    /// and the MPI_Allgatherv layout (dim doubles per vertex, rank order).
-    unsigned int     first_owned = 0, n_owned = 0;
-    std::vector<int> counts, displacements;
+    /// The owned boundary vertices: [first_owned, first_owned + n_owned)
+    /// (the vertices are numbered rank by rank).
+    unsigned int first_owned = 0, n_owned = 0;
+    /// The longest boundary edge in the reference configuration.
+    double longest_edge = 0.;
 
     double d_hat = 0., kappa = 0.;
     double end_factor    = 1.;
