@@ -373,7 +373,7 @@ namespace hyperelastic
                                    const double      t,
                                    VectorType       &forces) const
   {
-    const auto scope = timed();
+    const auto scope = timed_section(timer, "contact");
     contact_forces(u, t, forces);
   }
 
@@ -386,7 +386,7 @@ namespace hyperelastic
     MatrixType                      &matrix,
     VectorType                      &rhs) const
   {
-    const auto scope = timed();
+    const auto scope = timed_section(timer, "contact");
     // While the obstacles are on their way (Placed at obstacle_time(t)),
     // the linearization carries the rest of their motion w_k: the pair's
     // forces depend on x - w, so the right-hand side gains K w on the
@@ -436,7 +436,7 @@ namespace hyperelastic
   double
   ObstacleContact<dim>::potential(const VectorType &u, const double t) const
   {
-    const auto scope   = timed();
+    const auto scope   = timed_section(timer, "contact");
     double     sum     = 0.;
     const bool crossed = for_each_pair(
       u, t, false, [&](unsigned int, unsigned int, const PairState &p) {
@@ -453,7 +453,7 @@ namespace hyperelastic
                                               const VectorType &direction,
                                               const double      t) const
   {
-    const auto scope = timed();
+    const auto scope = timed_section(timer, "contact");
     // The obstacles move jointly with the body: from where they stand to
     // their place at t (a straight way in between).
     const std::vector<Placed> now = placed(obstacle_time(t));

@@ -574,7 +574,7 @@ namespace hyperelastic
                                const double,
                                VectorType &forces) const
   {
-    const auto scope = timed();
+    const auto scope = timed_section(timer, "contact");
     add_pair_forces(u, forces);
   }
 
@@ -595,7 +595,7 @@ namespace hyperelastic
     MatrixType                      &matrix,
     VectorType                      &rhs) const
   {
-    const auto scope = timed();
+    const auto scope = timed_section(timer, "contact");
     // The prescribed value of every boundary dof near here (NaN where
     // free), from its owner: a pair's far vertices may be constrained on
     // another rank.
@@ -662,7 +662,7 @@ namespace hyperelastic
   double
   SelfContact<dim>::potential(const VectorType &u, const double) const
   {
-    const auto scope = timed();
+    const auto scope = timed_section(timer, "contact");
     double     sum   = 0.;
     const bool touching =
       for_each_active(positions(u), 0, [&](const Pair &pair, const auto &b) {
@@ -680,7 +680,7 @@ namespace hyperelastic
                                           const VectorType &direction,
                                           const double) const
   {
-    const auto                         scope = timed();
+    const auto                         scope = timed_section(timer, "contact");
     const State                        s     = state(u, &direction, d_hat);
     const std::vector<Point<dim>>     &x     = s.x;
     const std::vector<Tensor<1, dim>> &p     = s.p;
@@ -713,7 +713,7 @@ namespace hyperelastic
   bool
   SelfContact<dim>::needs_new_couplings(const VectorType &u, const double)
   {
-    const auto                    scope = timed();
+    const auto                    scope = timed_section(timer, "contact");
     const std::vector<Point<dim>> x =
       state(u, nullptr, coupling_reach * d_hat).x;
     bool grew = false;

@@ -37,6 +37,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 
+#include <hyperelastic/base/timed_section.h>
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/contact/obstacle_surface.h>
 #include <hyperelastic/loads/load_term.h>
@@ -49,7 +50,6 @@
 #include <limits>
 #include <map>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -299,16 +299,5 @@ namespace hyperelastic
     /// c of the end-state map (set_end_state_map).
     double               end_factor = 1.;
     dealii::TimerOutput *timer      = nullptr;
-
-    /// A scope of the section "contact" (empty without a timer).
-    std::optional<dealii::TimerOutput::Scope>
-    timed() const
-    {
-      if (timer)
-        return std::optional<dealii::TimerOutput::Scope>(std::in_place,
-                                                         *timer,
-                                                         "contact");
-      return std::nullopt;
-    }
   };
 } // namespace hyperelastic

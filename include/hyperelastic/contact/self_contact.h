@@ -38,6 +38,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 
+#include <hyperelastic/base/timed_section.h>
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/contact/primitive_distance.h>
 #include <hyperelastic/loads/load_term.h>
@@ -46,7 +47,6 @@
 
 #include <array>
 #include <map>
-#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -317,14 +317,5 @@ namespace hyperelastic
 
     mutable Cost         spent;
     dealii::TimerOutput *timer = nullptr;
-    std::optional<dealii::TimerOutput::Scope>
-    timed() const
-    {
-      if (timer)
-        return std::optional<dealii::TimerOutput::Scope>(std::in_place,
-                                                         *timer,
-                                                         "contact");
-      return std::nullopt;
-    }
   };
 } // namespace hyperelastic
