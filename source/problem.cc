@@ -107,10 +107,11 @@ namespace hyperelastic
             "'Contact/Self contact = true' needs 'Problem/Formulation = "
             "displacement' (the mixed formulation's block preconditioner "
             "keeps the tangent's sparsity, which self-contact pairs grow)");
-        auto term =
-          std::make_unique<SelfContact<dim>>(parameters.contact,
-                                             dof_handler,
-                                             material->small_strain_moduli());
+        auto term = std::make_unique<SelfContact<dim>>(
+          parameters.contact,
+          dof_handler,
+          material->small_strain_moduli(),
+          parameters.time_integration.dynamic());
         term->set_timer(timer);
         self_contact = term.get();
         elasticity->add_term(std::move(term));
@@ -269,7 +270,9 @@ namespace hyperelastic
                                   system->load_factor(),
                                   owned);
         if (self_contact)
-          self_contact->contact_forces(system->solution(), owned);
+          self_contact->contact_forces(system->solution(),
+                                       system->load_factor(),
+                                       owned);
         owned.compress(VectorOperation::add);
         contact_force.reinit(system->solution());
         contact_force = owned;

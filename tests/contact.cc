@@ -35,6 +35,7 @@
 #include "support/random_vector.h"
 #include "support/scene_run.h"
 #include "support/scene_text.h"
+#include "support/summary_columns.h"
 
 #include <array>
 #include <cmath>
@@ -385,16 +386,6 @@ namespace
 
   /// The value of CSV column @p name in @p summary (NaN if absent).
   template <int dim>
-  double
-  column(const StepSummary<dim> &summary, const std::string &name)
-  {
-    for (const auto &c : summary.columns())
-      if (c.name == name)
-        return c.value;
-    return std::nan("");
-  }
-
-  template <int dim>
   void
   resting(Checker &checker)
   {
@@ -708,28 +699,6 @@ namespace
                                     : number(v0) + "; 0"));
   }
 
-  /// The summary of the step that ends at time @p t.
-  template <int dim>
-  const StepSummary<dim> &
-  at_time(const std::vector<StepSummary<dim>> &summaries, const double t)
-  {
-    for (const auto &s : summaries)
-      if (std::abs(s.load_factor - t) < 1e-9)
-        return s;
-    throw std::runtime_error("no step ends at t = " + number(t));
-  }
-
-  /// The mean horizontal acceleration of a unit mass over t in [0.1, 0.3],
-  /// from its momentum.
-  template <int dim>
-  double
-  mean_acceleration(const std::vector<StepSummary<dim>> &summaries)
-  {
-    return (column(at_time(summaries, 0.3), "momentum_x") -
-            column(at_time(summaries, 0.1), "momentum_x")) /
-           0.2;
-  }
-
   template <int dim>
   void
   friction(Checker &checker)
@@ -741,18 +710,15 @@ namespace
       const auto problem =
         run_scene<dim>(block_on_rough_floor<dim>(0., 2., 0.3));
       const auto  &s = problem->summaries();
-      const double a = mean_acceleration(s);
+      const double a = mean_rate(s, "momentum_x", 0.1, 0.3);
       checker.close(tag + "sliding block's deceleration over t in [0.1, 0.3] "
                           "against mu g = 5",
                     -a,
                     mu_g,
                     mu_g,
                     0.02);
-      double smallest = 1e300;
-      for (const auto &row : s)
-        smallest = std::min(smallest, column(row, "contact_min_distance"));
       checker.above(tag + "sliding: smallest contact_min_distance",
-                    smallest,
+                    smallest(s, "contact_min_distance"),
                     0.);
     }
     // Pulled by T = 0.8 mu N from rest: it sticks, creeping slower than
@@ -775,7 +741,7 @@ namespace
     {
       const auto problem =
         run_scene<dim>(block_on_rough_floor<dim>(1.2 * mu_g, 0., 0.3));
-      const double a = mean_acceleration(problem->summaries());
+      const double a = mean_rate(problem->summaries(), "momentum_x", 0.1, 0.3);
       checker.close(tag + "pulled by 1.2 mu N: acceleration over t in "
                           "[0.1, 0.3] against 0.2 mu g = 1",
                     a,

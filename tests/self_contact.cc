@@ -12,7 +12,14 @@
 //       with the self pairs' smallest distance > 0, and the ends do touch
 //       (self pairs active, end gap below d_hat);
 //   hollow_ball DIM MESH a hollow disk (2D) or ball (3D) squashed by a plate
-//       until its inner surfaces meet: the same checks.
+//       until its inner surfaces meet: the same checks;
+//   friction DIM MESH    a unit block on a long block (one mesh, the lower
+//       one clamped), 'Self contact friction coefficient' = 0.5, gravity
+//       10, backward Euler: sliding at 2 it decelerates at mu g (2 %);
+//       pulled by 0.8 mu N it sticks (creeps slower than eps_v once the
+//       pull's shear wave has died out, t in [0.3, 0.5]); pulled by
+//       1.2 mu N it accelerates at 0.2 mu g (2 %) (as the obstacle test of
+//       tests/contact.cc).
 // The intersection check is the test's own: every two deformed boundary
 // segments (2D) or triangles (3D) without a common vertex, candidates from
 // an R-tree of their boxes, tested exactly with orientation signs.
@@ -25,6 +32,7 @@
 #include "support/checker.h"
 #include "support/scene_run.h"
 #include "support/scene_text.h"
+#include "support/summary_columns.h"
 
 #include <algorithm>
 #include <cmath>
@@ -177,16 +185,6 @@ namespace
     return n;
   }
 
-  template <int dim>
-  double
-  column(const StepSummary<dim> &s, const std::string &name)
-  {
-    for (const auto &c : s.more)
-      if (c.name == name)
-        return c.value;
-    return std::numeric_limits<double>::quiet_NaN();
-  }
-
   /// Runs @p scene, checking every converged state: no intersection, the
   /// CSV's contact_min_distance > 0, and the self pairs' own smallest
   /// distance > 0. Returns the problem.
@@ -294,7 +292,7 @@ namespace
                                 dh,
                                 LameParameters::from_young_poisson(1., 0.3));
     VectorType             forces(dh.locally_owned_dofs(), MPI_COMM_WORLD);
-    self.contact_forces(problem->solution(), forces);
+    self.contact_forces(problem->solution(), 1., forces);
     forces.compress(VectorOperation::add);
     Tensor<1, dim>                    lower, upper;
     std::set<types::global_dof_index> seen;
@@ -351,6 +349,101 @@ namespace
                  std::to_string(column(problem->summaries().back(),
                                        "contact_active_pairs")) +
                  " active pairs");
+  }
+
+  /// A unit block (E = 1e4, density 1) resting on a long one (clamped at
+  /// its bottom), one mesh (meshes/block_on_block_DIMd.msh), friction mu =
+  /// 0.5 between them, gravity 10 and the horizontal body force @p pull on
+  /// the upper block, which starts with the horizontal velocity @p v0;
+  /// backward Euler, h = 0.01, to t = @p end.
+  template <int dim>
+  std::string
+  block_on_block(const std::string &mesh,
+                 const double       pull,
+                 const double       v0,
+                 const double       end = 0.3)
+  {
+    const std::string upper = std::string(dim == 2 ? "y" : "z") + " > 0.502";
+    const std::string rest  = dim == 2 ? "" : "; 0";
+    return subsection("Problem", entry("Dimension", std::to_string(dim))) +
+           subsection("Mesh", entry("Source", "file") + entry("File", mesh)) +
+           subsection("Material",
+                      entry("Model", "neo-Hookean") +
+                        entry("Young's modulus", "1e4") +
+                        entry("Poisson's ratio", "0.3")) +
+           subsection("Loading",
+                      entry("Body force",
+                            upper + " ? " + number(pull) + " : 0" + rest +
+                              "; -10")) +
+           subsection("Output", entry("Write VTU", "false")) +
+           subsection("Dirichlet 1",
+                      entry("Boundary id", "1") +
+                        entry("Components", dim == 2 ? "x, y" : "x, y, z") +
+                        entry("Displacement", dim == 2 ? "0; 0" : "0; 0; 0")) +
+           subsection("Contact",
+                      entry("Barrier distance", "0.005") +
+                        entry("Self contact", "true") +
+                        entry("Self contact friction coefficient", "0.5")) +
+           subsection("Time integration",
+                      entry("Scheme", "backward Euler") +
+                        entry("Density", "1") + entry("Time step", "0.01") +
+                        entry("End time", number(end)) +
+                        entry("Initial velocity",
+                              upper + " ? " + number(v0) + " : 0" + rest +
+                                "; 0"));
+  }
+
+  template <int dim>
+  void
+  friction(Checker &checker, const std::string &mesh)
+  {
+    const std::string tag  = std::to_string(dim) + "D block on a block: ";
+    const double      mu_g = 0.5 * 10.; // unit mass
+    // Sliding at v0 = 2: friction decelerates it at mu g.
+    {
+      const auto  problem = run_scene<dim>(block_on_block<dim>(mesh, 0., 2.));
+      const auto &s       = problem->summaries();
+      checker.close(tag + "sliding block's deceleration over t in [0.1, 0.3] "
+                          "against mu g = 5",
+                    -mean_rate(s, "momentum_x", 0.1, 0.3),
+                    mu_g,
+                    mu_g,
+                    0.02);
+      checker.above(tag + "sliding: smallest contact_min_distance",
+                    smallest(s, "contact_min_distance"),
+                    0.);
+    }
+    // Pulled by 0.8 mu N from rest: it sticks, creeping slower than the
+    // smoothing velocity eps_v = d_hat per unit time once the pull's shear
+    // wave has died out (t >= 0.3; the smoothed law's creep is
+    // (1 - sqrt(0.2)) eps_v = 0.55 eps_v).
+    {
+      const auto problem =
+        run_scene<dim>(block_on_block<dim>(mesh, 0.8 * mu_g, 0., 0.5));
+      double fastest = 0.;
+      for (const auto &row : problem->summaries())
+        if (row.load_factor > 0.3 - 1e-9)
+          {
+            // (NaN if the column were missing: the check fails.)
+            const double v = std::abs(column(row, "momentum_x"));
+            fastest        = std::isnan(v) ? v : std::max(fastest, v);
+          }
+      checker.at_most(tag + "pulled by 0.8 mu N: largest |momentum_x| / eps_v "
+                            "for t in [0.3, 0.5]",
+                      fastest / 0.005,
+                      1.);
+    }
+    // Pulled by 1.2 mu N: it slides with acceleration (T - mu N) / m.
+    {
+      const auto problem =
+        run_scene<dim>(block_on_block<dim>(mesh, 1.2 * mu_g, 0.));
+      checker.close(tag + "pulled by 1.2 mu N: acceleration over t in "
+                          "[0.1, 0.3] against 0.2 mu g = 1",
+                    mean_rate(problem->summaries(), "momentum_x", 0.1, 0.3),
+                    0.2 * mu_g,
+                    0.2 * mu_g,
+                    0.02);
+    }
   }
 
   /// The plates' Contact entries: @p n obstacles (planes) given as text.
@@ -449,6 +542,13 @@ main(int argc, char **argv)
           else
             two_blocks<3>(checker, argv[3]);
         }
+      else if (which == "friction" && argc > 3)
+        {
+          if (std::atoi(argv[2]) == 2)
+            friction<2>(checker, argv[3]);
+          else
+            friction<3>(checker, argv[3]);
+        }
       else if (which == "bent_bar" && argc > 2)
         bent_bar(checker, argv[2]);
       else if (which == "hollow_ball" && argc > 3)
@@ -460,7 +560,7 @@ main(int argc, char **argv)
         }
       else
         throw InputError("usage: self_contact two_blocks DIM MESH | bent_bar "
-                                 "MESH | hollow_ball DIM MESH");
+                                 "MESH | hollow_ball DIM MESH | friction DIM MESH");
     },
     MPI_COMM_WORLD);
   return checker.exit_code(status);

@@ -15,8 +15,17 @@
 //      speed v: the returned t lies in [T - 10 s d0 / v, T - s d0 / v]
 //      (never past the impact, never closer than s d0); a motion that
 //      misses returns 1; random motions of random pairs never get a sampled
-//      distance below s d0 on [0, t].
+//      distance below s d0 on [0, t];
+//   e. friction of a pair (contact/pair_friction.h): the closest-point
+//      coefficients of random pairs in every case give the distance vector
+//      (|sum beta_i x_i|^2 = squared distance, 1e-10), sum to 1 on the first
+//      feature and -1 on the second and lie inside the features; the
+//      friction energy's gradient and Hessian match central differences
+//      (relative 1e-6) sticking (|s| < eps) and sliding, the Hessian is
+//      positive semi-definite and the force opposes the slip with magnitude
+//      mu lambda once sliding.
 #include <hyperelastic/contact/collision_detection.h>
+#include <hyperelastic/contact/pair_friction.h>
 #include <hyperelastic/contact/primitive_distance.h>
 
 #include "support/checker.h"
@@ -436,6 +445,169 @@ namespace
                    1.);
     check.above("random motions limited by CCD", limited, 50);
   }
+
+  /// Coefficients of random pairs: the worst relative error of |sum beta
+  /// x|^2 against the squared distance, of the sums (1, -1) and how far a
+  /// coefficient lies outside [0, 1] (first feature) or [-1, 0] (second).
+  template <int dim, std::size_t n>
+  void
+  check_coefficients(Checker &check, const std::string &name, bool edge_edge)
+  {
+    std::mt19937                           random(11);
+    std::uniform_real_distribution<double> unit(-1., 1.);
+    constexpr std::size_t                  n_points = n / dim;
+    const unsigned int first_side = edge_edge ? 2 : 1; // points of feature 1
+    double             distance_error = 0., sum_error = 0., outside = 0.;
+    unsigned int       cases[4] = {0, 0, 0, 0};
+    for (unsigned int trial = 0; trial < 2000; ++trial)
+      {
+        std::array<double, n> x;
+        for (double &v : x)
+          v = unit(random);
+        const DistanceCase c = classify_pair<dim>(x, edge_edge);
+        ++cases[c.type];
+        const auto beta    = closest_point_coefficients<dim>(c, x);
+        double     length2 = 0., sums[2] = {0., 0.};
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            double v = 0.;
+            for (std::size_t i = 0; i < n_points; ++i)
+              v += beta[i] * x[i * dim + d];
+            length2 += v * v;
+          }
+        for (std::size_t i = 0; i < n_points; ++i)
+          sums[i < first_side ? 0 : 1] += beta[i];
+        // The vector may point either way (an edge-edge pair whose closest
+        // point on the second edge is an endpoint: point-line from it).
+        const double sign = sums[0] > 0. ? 1. : -1.;
+        for (std::size_t i = 0; i < n_points; ++i)
+          {
+            const double b = (i < first_side ? sign : -sign) * beta[i];
+            outside        = std::max({outside, -b, b - 1.});
+          }
+        const double d2 = squared_distance<dim>(c, x);
+        distance_error  = std::max(distance_error,
+                                  std::abs(length2 - d2) / std::max(d2, 1e-30));
+        sum_error       = std::max({sum_error,
+                                    std::abs(sign * sums[0] - 1.),
+                                    std::abs(sign * sums[1] + 1.)});
+      }
+    check.at_most(name + ": |sum beta x|^2 vs squared distance (2000 random)",
+                  distance_error,
+                  1e-10);
+    check.at_most(name + ": coefficient sums vs +-1 and -+1", sum_error, 1e-12);
+    check.at_most(name + ": coefficients outside their feature",
+                  outside,
+                  1e-12);
+    check.note(name + ": cases point-point " + std::to_string(cases[0]) +
+               ", point-line " + std::to_string(cases[1]) + ", point-plane " +
+               std::to_string(cases[2]) + ", line-line " +
+               std::to_string(cases[3]));
+  }
+
+  /// The friction energy of a random pair with slip of size @p slip (eps =
+  /// 1): derivatives against central differences, PSD Hessian, and (when
+  /// sliding) |force on the first point| = beta_0 mu lambda along -s.
+  template <int dim, std::size_t n>
+  void
+  check_friction(Checker &check, const std::string &name, const double slip)
+  {
+    constexpr std::size_t                  n_points = n / dim;
+    std::mt19937                           random(5);
+    std::uniform_real_distribution<double> unit(-1., 1.);
+    std::array<double, n>                  x0, x;
+    std::array<double, n_points>           beta;
+    std::array<double, dim>                normal;
+    for (double &v : x0)
+      v = unit(random);
+    for (double &v : beta)
+      v = unit(random);
+    double length = 0.;
+    for (double &v : normal)
+      v = unit(random), length += v * v;
+    for (double &v : normal)
+      v /= std::sqrt(length);
+    // A motion whose lagged slip has length slip.
+    std::array<double, n> p;
+    for (double &v : p)
+      v = unit(random);
+    std::array<double, dim> s{};
+    for (std::size_t i = 0; i < n_points; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        s[d] += beta[i] * p[i * dim + d];
+    double along = 0., size = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      along += s[d] * normal[d];
+    for (unsigned int d = 0; d < dim; ++d)
+      size += std::pow(s[d] - along * normal[d], 2);
+    size = std::sqrt(size);
+    for (std::size_t i = 0; i < n; ++i)
+      x[i] = x0[i] + slip / size * p[i];
+    const double mu_lambda = 0.7, eps = 1.;
+    const auto   exact =
+      pair_friction<dim>(x, x0, beta, normal, mu_lambda, eps, 2);
+    const double h       = 1e-6;
+    double       g_error = 0., g_norm = 0., h_error = 0., h_norm = 0.;
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        std::array<double, n> plus = x, minus = x;
+        plus[i] += h, minus[i] -= h;
+        const auto ep =
+          pair_friction<dim>(plus, x0, beta, normal, mu_lambda, eps, 1);
+        const auto em =
+          pair_friction<dim>(minus, x0, beta, normal, mu_lambda, eps, 1);
+        g_error = std::max(g_error,
+                           std::abs((ep.energy - em.energy) / (2. * h) -
+                                    exact.gradient[i]));
+        g_norm  = std::max(g_norm, std::abs(exact.gradient[i]));
+        for (std::size_t j = 0; j < n; ++j)
+          {
+            h_error =
+              std::max(h_error,
+                       std::abs((ep.gradient[j] - em.gradient[j]) / (2. * h) -
+                                exact.hessian[j][i]));
+            h_norm = std::max(h_norm, std::abs(exact.hessian[j][i]));
+          }
+      }
+    check.at_most(name + ": gradient vs FD", g_error / g_norm, 1e-6);
+    // (2D sliding: the Hessian (f1 / y)(P - s s^T / y^2) vanishes, P being
+    // rank one; errors relative to the scale mu lambda / max(y, eps).)
+    h_norm = std::max(h_norm, mu_lambda / std::max(slip, eps));
+    check.at_most(name + ": Hessian vs FD", h_error / h_norm, 1e-6);
+    std::array<double, n> values;
+    SmallMatrix<n>        vectors;
+    jacobi_eigen_decomposition<n>(exact.hessian, values, vectors);
+    check.at_least(name + ": Hessian PSD (min eigenvalue / norm)",
+                   *std::min_element(values.begin(), values.end()) / h_norm,
+                   -1e-12);
+    if (slip > eps)
+      {
+        double force = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          force += std::pow(exact.gradient[d], 2);
+        check.close(name + ": |force on point 0| vs |beta_0| mu lambda",
+                    std::sqrt(force),
+                    std::abs(beta[0]) * mu_lambda,
+                    mu_lambda,
+                    1e-12);
+      }
+  }
+
+  void
+  pair_friction_checks(Checker &check)
+  {
+    check.section("friction of a pair: closest-point coefficients");
+    check_coefficients<2, 6>(check, "2D point-segment", false);
+    check_coefficients<3, 12>(check, "point-triangle", false);
+    check_coefficients<3, 12>(check, "edge-edge", true);
+    check.section("friction of a pair: energy derivatives (eps = 1)");
+    for (const double slip : {0.3, 2.5})
+      {
+        const std::string regime = slip < 1. ? " sticking" : " sliding";
+        check_friction<2, 6>(check, "2D point-segment" + regime, slip);
+        check_friction<3, 12>(check, "3D pair" + regime, slip);
+      }
+  }
 } // namespace
 
 int
@@ -444,5 +616,6 @@ main()
   Checker check;
   barrier_derivatives(check);
   collision_detection(check);
+  pair_friction_checks(check);
   return check.exit_code();
 }

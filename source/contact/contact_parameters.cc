@@ -1,6 +1,7 @@
 // The scene's Contact subsection: declaration, documentation and validation.
 #include <deal.II/base/utilities.h>
 
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/contact/contact_parameters.h>
 
@@ -60,6 +61,15 @@ namespace hyperelastic
       "detection bounds every step). The barrier distance must be smaller "
       "than the distances between non-neighbouring boundary primitives in "
       "the reference configuration. Displacement formulation only.");
+    prm.declare_entry(
+      "Self contact friction coefficient",
+      "0",
+      Double(0.),
+      "mu of the Coulomb friction between parts of the boundary in contact "
+      "(Self contact), smoothed and lagged as for the obstacles (Friction "
+      "smoothing, Friction lagging updates): each pair's tangential slip is "
+      "measured between its closest points, in the tangent plane of its "
+      "last converged state. 0: frictionless.");
     for (unsigned int k = 1; k <= max_obstacles; ++k)
       {
         prm.enter_subsection("Obstacle " + std::to_string(k));
@@ -114,6 +124,12 @@ namespace hyperelastic
     friction_smoothing       = get_finite(prm, "Contact", "Friction smoothing");
     friction_lagging_updates = prm.get_integer("Friction lagging updates");
     self_contact             = prm.get_bool("Self contact");
+    self_contact_friction =
+      get_finite(prm, "Contact", "Self contact friction coefficient");
+    if (self_contact_friction > 0. && !self_contact)
+      throw InputError("'Contact/Self contact friction coefficient' = " +
+                       prm.get("Self contact friction coefficient") +
+                       " needs 'Contact/Self contact = true'");
     obstacles.clear();
     for (unsigned int k = 1; k <= max_obstacles; ++k)
       {

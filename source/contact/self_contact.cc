@@ -5,6 +5,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/contact/barrier.h>
 #include <hyperelastic/contact/collision_detection.h>
 #include <hyperelastic/contact/self_contact.h>
 #include <hyperelastic/mesh/mesh_distribution.h>
@@ -51,9 +52,13 @@ namespace hyperelastic
   template <int dim>
   SelfContact<dim>::SelfContact(const ContactParameters &parameters,
                                 const DoFHandler<dim>   &dof_handler,
-                                const LameParameters    &moduli)
+                                const LameParameters    &moduli,
+                                const bool               dynamic)
       : comm(dof_handler.get_communicator())
       , rank(Utilities::MPI::this_mpi_process(comm))
+      , friction(parameters.self_contact_friction)
+      , dynamic(dynamic)
+      , max_lagging_updates(parameters.friction_lagging_updates)
   {
     // The owned boundary vertices (ghost cells too: an owned vertex may lie
     // only on a neighbour's boundary face) and the boundary faces of the
@@ -172,6 +177,10 @@ namespace hyperelastic
     kappa = parameters.barrier_stiffness > 0.
               ? parameters.barrier_stiffness
               : (moduli.lambda + 2. * moduli.mu) / d_hat;
+    // Friction's smoothing as for the obstacles.
+    eps_setting = parameters.friction_smoothing > 0.
+                    ? parameters.friction_smoothing
+                    : (dynamic ? d_hat : 0.1 * d_hat);
 
     // The start: no two primitives within d_hat (their barrier would push
     // them apart before any load).
@@ -262,8 +271,11 @@ namespace hyperelastic
                           const VectorType *direction,
                           const double      reach) const
   {
-    // The owned vertices' positions (end-state map applied) and motions.
-    const unsigned int  m = direction ? 2 * dim : dim;
+    // The owned vertices' positions (end-state map applied), motions and
+    // (friction) start positions.
+    const bool          with_start = friction > 0. && !owned_start.empty();
+    const unsigned int  start_at   = direction ? 2 * dim : dim;
+    const unsigned int  m          = start_at + (with_start ? dim : 0);
     std::vector<double> owned(std::size_t(n_owned) * m);
     for (unsigned int k = 0; k < n_owned; ++k)
       {
@@ -272,13 +284,14 @@ namespace hyperelastic
         for (unsigned int d = 0; d < dim; ++d)
           x[d] += u(v.dofs[d]);
         if (end_factor != 1.)
-          x = start_positions[first_owned + k] +
-              end_factor * (x - start_positions[first_owned + k]);
+          x = owned_start[k] + end_factor * (x - owned_start[k]);
         for (unsigned int d = 0; d < dim; ++d)
           {
             owned[k * m + d] = x[d];
             if (direction)
               owned[k * m + dim + d] = end_factor * (*direction)(v.dofs[d]);
+            if (with_start)
+              owned[k * m + start_at + d] = owned_start[k][d];
           }
       }
     // This rank's region: the box of its vertices (swept along the motion),
@@ -326,12 +339,15 @@ namespace hyperelastic
         const std::vector<double> all = exchange(s.send, owned, m);
         s.x.assign(vertices.size(), Point<dim>());
         s.p.assign(direction ? vertices.size() : 0, Tensor<1, dim>());
+        s.x0.assign(with_start ? vertices.size() : 0, Point<dim>());
         for (unsigned int k = 0; k < vertices.size(); ++k)
           for (unsigned int d = 0; d < dim; ++d)
             {
               s.x[k][d] = all[std::size_t(k) * m + d];
               if (direction)
                 s.p[k][d] = all[std::size_t(k) * m + dim + d];
+              if (with_start)
+                s.x0[k][d] = all[std::size_t(k) * m + start_at + d];
             }
         bool       complete = true;
         const auto check    = [&](const auto &list) {
@@ -350,13 +366,6 @@ namespace hyperelastic
         margin *= 2.;
       }
     return s;
-  }
-
-  template <int dim>
-  std::vector<Point<dim>>
-  SelfContact<dim>::positions(const VectorType &u) const
-  {
-    return state(u, nullptr, d_hat).x;
   }
 
   template <int dim>
@@ -546,20 +555,23 @@ namespace hyperelastic
   template <int dim>
   void
   SelfContact<dim>::add_pair_forces(const VectorType &u,
+                                    const double      t,
                                     VectorType       &forces) const
   {
     std::vector<types::global_dof_index> rows;
     std::vector<double>                  values;
-    const bool                           touching =
-      for_each_active(positions(u), 1, [&](const Pair &pair, const auto &b) {
-        for (unsigned int i = 0; i < n_points; ++i)
-          if (vertices[pair.v[i]].owner == rank)
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                rows.push_back(vertices[pair.v[i]].dofs[d]);
-                values.push_back(-b.gradient[i * dim + d]);
-              }
-      });
+    const auto add = [&](const Pair &pair, const auto &b) {
+      for (unsigned int i = 0; i < n_points; ++i)
+        if (vertices[pair.v[i]].owner == rank)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              rows.push_back(vertices[pair.v[i]].dofs[d]);
+              values.push_back(-b.gradient[i * dim + d]);
+            }
+    };
+    const State s        = near_state(u);
+    const bool  touching = for_each_active(s.x, 1, add);
+    for_each_friction(s, t, 1, add);
     // On every rank, even without contact: the first add after an insert
     // makes Trilinos assemble the vector, a collective operation.
     forces.add(rows, values);
@@ -571,26 +583,27 @@ namespace hyperelastic
   template <int dim>
   void
   SelfContact<dim>::add_forces(const VectorType &u,
-                               const double,
-                               VectorType &forces) const
+                               const double      t,
+                               VectorType       &forces) const
   {
     const auto scope = timed_section(timer, "contact");
-    add_pair_forces(u, forces);
+    add_pair_forces(u, t, forces);
   }
 
   template <int dim>
   void
   SelfContact<dim>::contact_forces(const VectorType &u,
+                                   const double      t,
                                    VectorType       &forces) const
   {
-    add_pair_forces(u, forces);
+    add_pair_forces(u, t, forces);
   }
 
   template <int dim>
   void
   SelfContact<dim>::add_load_stiffness(
-    const VectorType &u,
-    const double,
+    const VectorType                &u,
+    const double                     t,
     const AffineConstraints<double> &constraints,
     MatrixType                      &matrix,
     VectorType                      &rhs) const
@@ -599,7 +612,7 @@ namespace hyperelastic
     // The prescribed value of every boundary dof near here (NaN where
     // free), from its owner: a pair's far vertices may be constrained on
     // another rank.
-    const State         s = state(u, nullptr, d_hat);
+    const State         s = near_state(u);
     std::vector<double> owned(std::size_t(n_owned) * dim);
     for (unsigned int k = 0; k < n_owned; ++k)
       for (unsigned int d = 0; d < dim; ++d)
@@ -614,10 +627,10 @@ namespace hyperelastic
     std::vector<double>                  rhs_values;
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
-    for_each_active(s.x, 2, [&](const Pair &pair, const auto &b) {
+    const auto add = [&](const Pair &pair, const auto &b, const bool project) {
       const SmallMatrix<n_coordinates> K =
-        project_pairs ? positive_semidefinite_part<n_coordinates>(b.hessian)
-                      : b.hessian;
+        project ? positive_semidefinite_part<n_coordinates>(b.hessian)
+                : b.hessian;
       for (unsigned int i = 0; i < n_points; ++i)
         {
           const Vertex &row_vertex = vertices[pair.v[i]];
@@ -654,21 +667,30 @@ namespace hyperelastic
                 }
             }
         }
+    };
+    for_each_active(s.x, 2, [&](const Pair &pair, const auto &b) {
+      add(pair, b, project_pairs);
+    });
+    // Friction's pair Hessians are positive semi-definite already.
+    for_each_friction(s, t, 2, [&](const Pair &pair, const auto &b) {
+      add(pair, b, false);
     });
     rhs.add(rhs_rows, rhs_values);
   }
 
   template <int dim>
   double
-  SelfContact<dim>::potential(const VectorType &u, const double) const
+  SelfContact<dim>::potential(const VectorType &u, const double t) const
   {
     const auto scope = timed_section(timer, "contact");
     double     sum   = 0.;
-    const bool touching =
-      for_each_active(positions(u), 0, [&](const Pair &pair, const auto &b) {
-        if (counted_here(pair))
-          sum += b.energy;
-      });
+    const auto add   = [&](const Pair &pair, const auto &b) {
+      if (counted_here(pair))
+        sum += b.energy;
+    };
+    const State s        = near_state(u);
+    const bool  touching = for_each_active(s.x, 0, add);
+    for_each_friction(s, t, 0, add);
     if (touching)
       sum = std::numeric_limits<double>::infinity();
     return Utilities::MPI::sum(sum, comm);
@@ -703,10 +725,138 @@ namespace hyperelastic
 
   template <int dim>
   void
-  SelfContact<dim>::begin_step(const VectorType &u, const double)
+  SelfContact<dim>::begin_step(const VectorType &u, const double t_start)
   {
     end_factor      = 1.;
-    start_positions = positions(u);
+    step_start      = t_start;
+    lagging_updates = 0;
+    owned_start.resize(n_owned);
+    for (unsigned int k = 0; k < n_owned; ++k)
+      {
+        const Vertex &v = vertices[first_owned + k];
+        owned_start[k]  = v.X;
+        for (unsigned int d = 0; d < dim; ++d)
+          owned_start[k][d] += u(v.dofs[d]);
+      }
+    if (friction > 0.)
+      lagged = lag(near_state(u));
+  }
+
+  template <int dim>
+  std::vector<typename SelfContact<dim>::Lagged>
+  SelfContact<dim>::lag(const State &s) const
+  {
+    std::vector<Lagged> result;
+    for_each_active(s.x, 0, [&](const Pair &pair, const auto &b) {
+      const Coordinates  c = coordinates(pair, s.x);
+      const DistanceCase k = classify_pair<dim>(c, pair.edge_edge);
+      Lagged             l;
+      l.pair = pair;
+      l.beta = closest_point_coefficients<dim>(k, c);
+      // n: the closest points' difference sum_i beta_i x_i, normalized.
+      l.normal.fill(0.);
+      for (unsigned int i = 0; i < n_points; ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          l.normal[d] += l.beta[i] * c[i * dim + d];
+      double length = 0.;
+      for (const double v : l.normal)
+        length += v * v;
+      length = std::sqrt(length);
+      if (!(length > 0.))
+        return;
+      for (double &v : l.normal)
+        v /= length;
+      // lambda = -kappa w m b'(d) (the mollifier's value, not its slope).
+      double mollifier = 1.;
+      if constexpr (dim == 3)
+        if (pair.mollifier > 0.)
+          {
+            const double cs = edge_cross_square(c);
+            if (cs < pair.mollifier)
+              mollifier = (2. - cs / pair.mollifier) * cs / pair.mollifier;
+          }
+      l.normal_force = -kappa * pair.weight * mollifier *
+                       barrier(b.distance, d_hat).derivative;
+      result.push_back(l);
+    });
+    return result;
+  }
+
+  template <int dim>
+  template <typename F>
+  void
+  SelfContact<dim>::for_each_friction(const State       &s,
+                                      const double       t,
+                                      const unsigned int order,
+                                      const F           &f) const
+  {
+    if (!(friction > 0.) || lagged.empty())
+      return;
+    Stopwatch    watch(spent.narrow);
+    const double h   = end_factor * (t - std::min(step_start, t));
+    const double eps = dynamic ? eps_setting * h : eps_setting;
+    if (!(eps > 0.))
+      return; // no time has passed: no slip
+    for (const Lagged &l : lagged)
+      {
+        Coordinates x, x0;
+        bool        known = true;
+        for (unsigned int i = 0; i < n_points; ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              x[i * dim + d]  = s.x[l.pair.v[i]][d];
+              x0[i * dim + d] = s.x0[l.pair.v[i]][d];
+              known           = known && !std::isnan(x[i * dim + d]) &&
+                      !std::isnan(x0[i * dim + d]);
+            }
+        // A vertex that slid out of reach within the step: its pair has
+        // left the contact.
+        if (!known)
+          continue;
+        PairBarrier<n_coordinates> b = pair_friction<dim>(
+          x, x0, l.beta, l.normal, friction * l.normal_force, eps, order);
+        b.energy /= end_factor;
+        if (order == 2)
+          for (auto &row : b.hessian)
+            for (double &v : row)
+              v *= end_factor;
+        f(l.pair, b);
+      }
+  }
+
+  template <int dim>
+  bool
+  SelfContact<dim>::update_lagged(const VectorType &u, const double)
+  {
+    if (!(friction > 0.) || lagging_updates >= max_lagging_updates)
+      return false;
+    const auto          scope = timed_section(timer, "contact");
+    std::vector<Lagged> next  = lag(near_state(u));
+    // The largest change of a pair's normal force (pairs that appear or
+    // disappear change from or to 0).
+    std::map<std::array<unsigned int, n_points>, double> before;
+    for (const Lagged &l : lagged)
+      before[l.pair.v] = l.normal_force;
+    double change = 0., largest = 0.;
+    for (const Lagged &l : next)
+      {
+        largest = std::max(largest, l.normal_force);
+        auto it = before.find(l.pair.v);
+        change  = std::max(change,
+                          std::abs(l.normal_force -
+                                   (it == before.end() ? 0. : it->second)));
+        if (it != before.end())
+          before.erase(it);
+      }
+    for (const auto &[pair, force] : before)
+      change = std::max(change, force);
+    change  = Utilities::MPI::max(change, comm);
+    largest = Utilities::MPI::max(largest, comm);
+    if (!(change > 1e-3 * largest))
+      return false;
+    lagged = std::move(next);
+    ++lagging_updates;
+    return true;
   }
 
   template <int dim>
@@ -716,23 +866,34 @@ namespace hyperelastic
     const auto                    scope = timed_section(timer, "contact");
     const std::vector<Point<dim>> x =
       state(u, nullptr, coupling_reach * d_hat).x;
-    bool grew = false;
-    for_each_active(x, 0, [&](const Pair &pair, const auto &) {
+    bool       grew  = false;
+    const auto check = [&](const Pair &pair) {
       for (const unsigned int a : pair.v)
         if (vertices[a].owner == rank)
           for (const unsigned int b : pair.v)
             grew = grew || (a != b && !reserved.count({a, b}));
-    });
+    };
+    for_each_active(x, 0, [&](const Pair &pair, const auto &) { check(pair); });
+    // Friction's lagged pairs write their couplings too.
+    for (const Lagged &l : lagged)
+      if (friction > 0.)
+        check(l.pair);
     if (Utilities::MPI::max(grew ? 1 : 0, comm) == 0)
       return false;
     // Reserve the couplings of every pair within coupling_reach d_hat.
-    for (const Pair &pair :
-         candidates(boxes(x, nullptr, coupling_reach * d_hat)))
+    const auto reserve = [&](const Pair &pair) {
       for (const unsigned int a : pair.v)
         if (vertices[a].owner == rank)
           for (const unsigned int b : pair.v)
             if (a != b)
               reserved.insert({a, b});
+    };
+    for (const Pair &pair :
+         candidates(boxes(x, nullptr, coupling_reach * d_hat)))
+      reserve(pair);
+    for (const Lagged &l : lagged)
+      if (friction > 0.)
+        reserve(l.pair);
     ++spent.sparsity_rebuilds;
     return true;
   }
@@ -754,7 +915,7 @@ namespace hyperelastic
     double       closest = d_hat;
     unsigned int active  = 0;
     for_each_active(
-      positions(u),
+      near_state(u).x,
       0,
       [&](const Pair &pair, const auto &) {
         active += counted_here(pair) ? 1 : 0;

@@ -50,6 +50,8 @@ namespace hyperelastic
     unsigned int friction_lagging_updates = 4;
     /// Contact between parts of the body's boundary (and between bodies).
     bool self_contact = false;
+    /// mu of the friction between parts of the boundary (self contact).
+    double self_contact_friction = 0.;
     /// The obstacles whose Type is not none, in the order of their sections.
     std::vector<ObstacleParameters> obstacles;
 

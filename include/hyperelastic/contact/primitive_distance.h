@@ -384,6 +384,79 @@ namespace hyperelastic
     return result;
   }
 
+  /// The closest-point coefficients of case @p c at @p x: one per point of
+  /// the pair (n / dim of them), such that sum_i beta_i x_i is the vector
+  /// from the closest point of the second feature to that of the first
+  /// (point-point [1, -1], point-line [1, -(1 - t), -t], point-plane [1,
+  /// -barycentric], line-line [1 - s, s, -(1 - t), -t] on the involved
+  /// points, 0 on the others); its length is the distance. Friction lags
+  /// them, with the normal, to measure the tangential slip of the pair.
+  template <int dim, std::size_t n>
+  std::array<double, n / dim>
+  closest_point_coefficients(const DistanceCase          &c,
+                             const std::array<double, n> &x)
+  {
+    using namespace primitive_geometry;
+    std::array<double, n / dim> beta{};
+    const Vec<double, dim> a = point<dim>(x, c.p[0]), b = point<dim>(x, c.p[1]);
+    switch (c.type)
+      {
+      case DistanceCase::point_point:
+        beta[c.p[0]] = 1., beta[c.p[1]] = -1.;
+        break;
+      case DistanceCase::point_line:
+        {
+          const Vec<double, dim> e =
+            minus<double, dim>(point<dim>(x, c.p[2]), b);
+          const double t = dot<double, dim>(minus<double, dim>(a, b), e) /
+                           dot<double, dim>(e, e);
+          beta[c.p[0]] = 1., beta[c.p[1]] = -(1. - t), beta[c.p[2]] = -t;
+          break;
+        }
+      case DistanceCase::point_plane:
+      case DistanceCase::line_line:
+        if constexpr (dim == 3)
+          {
+            // Solve [u v] (y, z) = r in the least-squares sense (u, v: the
+            // triangle's edges from b, or the lines' directions).
+            const bool           plane = c.type == DistanceCase::point_plane;
+            const Vec<double, 3> e     = point<3>(x, c.p[2]),
+                                 f     = point<3>(x, c.p[3]);
+            const Vec<double, 3> u     = plane ? minus<double, 3>(e, b)
+                                               : minus<double, 3>(b, a),
+                                 v     = plane ? minus<double, 3>(f, b)
+                                               : minus<double, 3>(f, e);
+            const double uu = dot<double, 3>(u, u), uv = dot<double, 3>(u, v),
+                         vv  = dot<double, 3>(v, v);
+            const double det = uu * vv - uv * uv;
+            if (plane)
+              {
+                // The projection of a is b + y u + z v.
+                const Vec<double, 3> r  = minus<double, 3>(a, b);
+                const double         ru = dot<double, 3>(r, u),
+                             rv         = dot<double, 3>(r, v);
+                const double y          = (vv * ru - uv * rv) / det,
+                             z          = (uu * rv - uv * ru) / det;
+                beta[c.p[0]] = 1., beta[c.p[1]] = -(1. - y - z),
+                beta[c.p[2]] = -y, beta[c.p[3]] = -z;
+              }
+            else
+              {
+                // Closest points a + s u and e + t v of the two lines.
+                const Vec<double, 3> r  = minus<double, 3>(a, e);
+                const double         ru = dot<double, 3>(r, u),
+                             rv         = dot<double, 3>(r, v);
+                const double s          = (uv * rv - vv * ru) / det,
+                             t          = (uu * rv - uv * ru) / det;
+                beta[c.p[0]] = 1. - s, beta[c.p[1]] = s,
+                beta[c.p[2]] = -(1. - t), beta[c.p[3]] = -t;
+              }
+          }
+        break;
+      }
+    return beta;
+  }
+
   /// @p matrix projected onto the positive semi-definite cone (its negative
   /// eigenvalues set to zero).
   template <std::size_t n>

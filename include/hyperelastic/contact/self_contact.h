@@ -30,6 +30,16 @@
 // (LoadTerm::needs_new_couplings). The answer does not depend on the number
 // of ranks.
 //
+// Friction ('Contact/Self contact friction coefficient' mu): the smoothed,
+// lagged Coulomb friction of the obstacles, per pair
+// (contact/pair_friction.h): at the step's start and at each converged
+// state of its lagging updates, every active pair's normal force
+// lambda = -kappa w m b'(d), unit normal and closest-point coefficients are
+// recorded; the step's slip of the closest points in that tangent plane
+// gives the dissipation potential mu lambda f0(|s|) added to the energy.
+// Each rank lags the pairs with a vertex it owns; the start positions of the
+// vertices travel with the current ones.
+//
 // P2: the vertices only (flat faces between them), as for the obstacles.
 #pragma once
 
@@ -40,6 +50,7 @@
 
 #include <hyperelastic/base/timed_section.h>
 #include <hyperelastic/contact/contact_parameters.h>
+#include <hyperelastic/contact/pair_friction.h>
 #include <hyperelastic/contact/primitive_distance.h>
 #include <hyperelastic/loads/load_term.h>
 #include <hyperelastic/materials/material.h>
@@ -61,10 +72,11 @@ namespace hyperelastic
     /// Gathers the boundary (collective), sets d_hat and kappa as the
     /// obstacles do and checks the start: boundary primitives closer than
     /// d_hat in the reference configuration are an InputError naming the
-    /// place.
+    /// place. With @p dynamic, friction's smoothing is a slip velocity.
     SelfContact(const ContactParameters       &parameters,
                 const dealii::DoFHandler<dim> &dof_handler,
-                const LameParameters          &moduli);
+                const LameParameters          &moduli,
+                bool                           dynamic = false);
     ~SelfContact() override;
 
     std::string
@@ -106,7 +118,8 @@ namespace hyperelastic
       project_pairs = positive_semidefinite;
     }
 
-    /// kappa sum w m b; +infinity if two primitives touch.
+    /// kappa sum w m b (plus friction's potential); +infinity if two
+    /// primitives touch.
     double
     potential(const VectorType &u, double t) const override;
 
@@ -125,6 +138,13 @@ namespace hyperelastic
       end_factor = c;
     }
 
+    /// Friction: lags the normal forces, normals and closest points of the
+    /// active pairs at the converged @p u; true if a normal force changed
+    /// by more than 1e-3 of the largest (at most 'Friction lagging updates'
+    /// times a step).
+    bool
+    update_lagged(const VectorType &u, double t) override;
+
     bool
     needs_new_couplings(const VectorType &u, double t) override;
     void
@@ -136,10 +156,10 @@ namespace hyperelastic
     void
     summarize(const VectorType &u, StepSummary<dim> &summary) const;
 
-    /// Adds the nodal contact forces of the self pairs at @p u (owned
-    /// entries). Collective.
+    /// Adds the nodal contact forces of the self pairs at @p u and time
+    /// @p t (barrier and friction; owned entries). Collective.
     void
-    contact_forces(const VectorType &u, VectorType &forces) const;
+    contact_forces(const VectorType &u, double t, VectorType &forces) const;
 
     double
     barrier_distance() const
@@ -203,7 +223,7 @@ namespace hyperelastic
     /// [p, t0, t1, t2] or edge-edge [a0, a1, b0, b1] (3D).
     struct Pair
     {
-      std::array<unsigned int, n_points> v;
+      std::array<unsigned int, n_points> v{};
       bool                               edge_edge = false;
       double                             weight    = 0.; ///< w
       double mollifier = 0.; ///< eps_x (edge-edge), 0 otherwise
@@ -235,8 +255,10 @@ namespace hyperelastic
     {
       std::vector<dealii::Point<dim>> x; ///< positions (end-state map applied)
       std::vector<dealii::Tensor<1, dim>>
-                p; ///< motions (end-state map applied)
-      SendLists send;
+        p; ///< motions (end-state map applied)
+      /// The positions at the step's start (friction only).
+      std::vector<dealii::Point<dim>> x0;
+      SendLists                       send;
     };
 
     /// The state @p u (and the motion @p direction, if given): each rank
@@ -247,9 +269,13 @@ namespace hyperelastic
     State
     state(const VectorType &u, const VectorType *direction, double reach) const;
 
-    /// The positions this rank knows in the state @p u. Collective.
-    std::vector<dealii::Point<dim>>
-    positions(const VectorType &u) const;
+    /// The state @p u within d_hat (positions, and start positions with
+    /// friction). Collective.
+    State
+    near_state(const VectorType &u) const
+    {
+      return state(u, nullptr, d_hat);
+    }
 
     /// @p m values per vertex, @p owned_values of the owned vertices, sent
     /// as @p send says: the values of all vertices known here (NaN for the
@@ -284,9 +310,35 @@ namespace hyperelastic
       return vertices[lowest].owner == rank;
     }
 
-    /// The forces g = -dV/du of the active pairs on the owned rows.
+    /// A pair's lagged friction: closest-point coefficients, unit normal
+    /// and normal force lambda.
+    struct Lagged
+    {
+      Pair                         pair;
+      std::array<double, n_points> beta;
+      std::array<double, dim>      normal;
+      double                       normal_force = 0.;
+    };
+
+    /// The lagged friction of every active pair at @p s (with a vertex
+    /// owned here).
+    std::vector<Lagged>
+    lag(const State &s) const;
+
+    /// Calls @p f(pair, energy) with the friction energy of every lagged
+    /// pair at @p s and time @p t (derivatives up to @p order), scaled for
+    /// the end-state map as the barrier is.
+    template <typename F>
     void
-    add_pair_forces(const VectorType &u, VectorType &forces) const;
+    for_each_friction(const State &s,
+                      double       t,
+                      unsigned int order,
+                      const F     &f) const;
+
+    /// The forces g = -dV/du of the active pairs (and friction) on the
+    /// owned rows.
+    void
+    add_pair_forces(const VectorType &u, double t, VectorType &forces) const;
 
     const MPI_Comm                             comm;
     const unsigned int                         rank;
@@ -305,8 +357,17 @@ namespace hyperelastic
     double d_hat = 0., kappa = 0.;
     double end_factor    = 1.;
     bool   project_pairs = false;
-    /// Boundary positions at the step's start (for the end-state map).
-    std::vector<dealii::Point<dim>> start_positions;
+    /// The owned boundary vertices' positions at the step's start (the
+    /// end-state map, friction's slip), and the step's start time.
+    std::vector<dealii::Point<dim>> owned_start;
+    double                          step_start = 0.;
+
+    /// Friction: mu, the smoothing (a slip length, or with dynamics a slip
+    /// velocity), the lagged pairs and the updates made this step.
+    double              friction = 0., eps_setting = 0.;
+    bool                dynamic             = false;
+    unsigned int        max_lagging_updates = 0, lagging_updates = 0;
+    std::vector<Lagged> lagged;
     /// The vertex couplings (owned vertex, other vertex) in the tangent's
     /// sparsity.
     std::set<std::pair<unsigned int, unsigned int>> reserved;
