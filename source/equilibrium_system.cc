@@ -339,6 +339,91 @@ namespace hyperelastic
     solution_size = converged.solution_size;
   }
 
+  // -------------------------------------------------- ContinuationSystem
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::set_state(const VectorType &v, const double t)
+  {
+    current_load_factor = t;
+    u                   = v;
+    u_ghosted           = u;
+    // The prescribed entries at their values at t: the constraints of the
+    // increment from the current values, applied to a zero vector, give it.
+    parts.boundary_conditions.make_constraints(parts.mapping,
+                                               parts.dof_handler,
+                                               relevant_dofs,
+                                               t,
+                                               u_ghosted,
+                                               false,
+                                               increment_constraints);
+    VectorType increment(owned_dofs, comm);
+    increment_constraints.distribute(increment);
+    u += increment;
+    u_ghosted = u;
+  }
+
+  template <int dim>
+  ResidualNorms
+  EquilibriumSystem<dim>::free_residual(VectorType &r)
+  {
+    const ResidualNorms norms = residual_norms();
+    r                         = residual;
+    homogeneous_constraints.set_zero(r);
+    return norms;
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::load_derivative(VectorType &r_t)
+  {
+    // Central differences in t at fixed free unknowns (exact to round-off
+    // for loads linear in t).
+    const VectorType at(u);
+    const double     t = current_load_factor;
+    const double     h = 1e-6 * std::max(1., std::abs(t));
+    double           noise;
+    set_state(at, t + h);
+    free_residual_norm(noise);
+    r_t = residual;
+    set_state(at, t - h);
+    free_residual_norm(noise);
+    r_t -= residual;
+    r_t *= 0.5 / h;
+    homogeneous_constraints.set_zero(r_t);
+    set_state(at, t);
+    free_residual_norm(noise);
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::assemble_tangent()
+  {
+    TimerOutput::Scope scope(parts.timer, "assembly");
+    active_constraints = &homogeneous_constraints;
+    elasticity->assemble_system(u_ghosted,
+                                current_load_factor,
+                                homogeneous_constraints,
+                                tangent,
+                                rhs,
+                                false);
+  }
+
+  template <int dim>
+  unsigned int
+  EquilibriumSystem<dim>::solve_tangent(const VectorType &b, VectorType &x)
+  {
+    {
+      TimerOutput::Scope scope(parts.timer, "preconditioner setup");
+      parts.linear_solver.prepare(tangent);
+    }
+    TimerOutput::Scope scope(parts.timer, "linear solve");
+    x                             = 0.;
+    const unsigned int iterations = parts.linear_solver.solve(
+      tangent, x, b, parts.parameters.linear_solver.relative_tolerance);
+    homogeneous_constraints.distribute(x);
+    return iterations;
+  }
+
   template class EquilibriumSystem<2>;
   template class EquilibriumSystem<3>;
 } // namespace hyperelastic

@@ -114,6 +114,30 @@ namespace hyperelastic
         problem.formulation = "stiffness warping";
       }
     formulation_kind(problem.formulation).check(*this);
+    // Arc length continues a quasi-static path of the displacement
+    // formulation (the constraint measures displacements; contact and
+    // inertia have states of their own along t).
+    if (load_stepping.method == LoadControl::arc_length)
+      {
+        const auto arc = [&](const std::string &entry,
+                             const std::string &value,
+                             const std::string &why) {
+          reject(entry, value, "'Load stepping/Method = arc length' " + why);
+        };
+        if (time_integration.dynamic())
+          arc("Time integration/Scheme",
+              time_integration.scheme_name(),
+              "continues quasi-static scenes only");
+        if (contact.active())
+          arc(contact.self_contact ? "Contact/Self contact"
+                                   : "Contact/Obstacle 1/Type",
+              contact.self_contact ? "true" : "(an obstacle)",
+              "does not work with contact yet");
+        if (problem.formulation != "displacement")
+          arc("Problem/Formulation",
+              problem.formulation,
+              "works with the displacement formulation only");
+      }
     // Accepting inverted equilibria needs a model defined at J <= 0.
     if (newton.inverted_elements == InvertedElements::warn)
       {

@@ -240,6 +240,9 @@ namespace hyperelastic
       contact->summarize(system->solution(), s.load_factor, s);
     if (self_contact)
       self_contact->summarize(system->solution(), s);
+    // Arc length: where the path became unstable.
+    if (parameters.load_stepping.method == LoadControl::arc_length)
+      s.more.push_back({"stability", result.stability});
 
     scope.stop();
     if (parameters.output.write_vtu &&

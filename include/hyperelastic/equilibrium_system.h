@@ -139,6 +139,23 @@ namespace hyperelastic
     void
     restore_converged_state() override;
 
+    // ContinuationSystem
+    void
+    set_state(const VectorType &u, double t) override;
+    const VectorType &
+    state() const override
+    {
+      return u;
+    }
+    ResidualNorms
+    free_residual(VectorType &r) override;
+    void
+    load_derivative(VectorType &r_t) override;
+    void
+    assemble_tangent() override;
+    unsigned int
+    solve_tangent(const VectorType &b, VectorType &x) override;
+
   private:
     /// Assembles the forces at u_ghosted into internal_force, external_force
     /// and residual; returns the residual norm on the free unknowns and its

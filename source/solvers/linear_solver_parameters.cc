@@ -1,4 +1,5 @@
-// The scene's Linear solver subsection: declaration, documentation and validation of its entries.
+// The scene's Linear solver subsection: declaration, documentation and
+// validation of its entries.
 #include <deal.II/base/utilities.h>
 
 #include <hyperelastic/base/error_handling.h>

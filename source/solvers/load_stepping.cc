@@ -1,8 +1,10 @@
 // Load-step control with cut-back on failure and growth after easy steps.
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/solvers/arc_length.h>
 #include <hyperelastic/solvers/load_stepping.h>
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 namespace hyperelastic
@@ -47,6 +49,69 @@ namespace hyperelastic
     const std::function<void(const LoadStep &, const NewtonResult &)>
       &on_converged) const
   {
+    if (parameters.method == LoadControl::arc_length && label == "Load step")
+      ArcLengthStepper(parameters, newton.settings(), nominal, pcout)
+        .run(system, on_converged);
+    else
+      run_load_control(newton, system, on_converged);
+  }
+
+  double
+  stiffness_along_path(ContinuationSystem &system,
+                       VectorType         &r_t,
+                       VectorType         &du_t)
+  {
+    system.assemble_tangent();
+    system.load_derivative(r_t);
+    r_t *= -1.;
+    system.solve_tangent(r_t, du_t);
+    const double length2 = du_t * du_t;
+    return length2 > 0. ? (du_t * r_t) / length2
+                        : std::numeric_limits<double>::quiet_NaN();
+  }
+
+  std::string
+  LoadStepper::limit_point_diagnosis(SteppedSystem &system,
+                                     const double   t) const
+  {
+    if (label != "Load step")
+      return "";
+    // The stiffness along the path, unloaded and at the last converged
+    // state.
+    const VectorType converged(system.state());
+    VectorType       r_t(converged), du(converged), zero(converged);
+    zero             = 0.;
+    const auto probe = [&](const VectorType &u, const double at) {
+      system.set_state(u, at);
+      try
+        {
+          return stiffness_along_path(system, r_t, du);
+        }
+      catch (const ConvergenceFailure &)
+        {
+          return std::numeric_limits<double>::quiet_NaN();
+        }
+    };
+    const double unloaded = probe(zero, 0.);
+    const double last     = probe(converged, t);
+    system.restore_converged_state();
+    if (!(unloaded > 0.) || !(last < 0.1 * unloaded))
+      return "";
+    std::ostringstream text;
+    text << "the load passed a maximum at t = " << t
+         << "; use Load stepping/Method = arc length (the tangent's "
+            "stiffness along the path fell to "
+         << last / unloaded << " of the unloaded one there)";
+    return text.str();
+  }
+
+  void
+  LoadStepper::run_load_control(
+    const NewtonSolver &newton,
+    SteppedSystem      &system,
+    const std::function<void(const LoadStep &, const NewtonResult &)>
+      &on_converged) const
+  {
     double       t         = 0.;
     double       increment = nominal;
     LoadStep     step;
@@ -57,7 +122,8 @@ namespace hyperelastic
         // Land exactly on t = end (no sliver of a last step).
         const double t_next =
           (t + increment > end - 1e-12 * nominal) ? end : t + increment;
-        pcout << "\n" << label << " " << step.step + 1 << ": t = " << t_next
+        pcout << "\n"
+              << label << " " << step.step + 1 << ": t = " << t_next
               << " (increment " << t_next - t << ")" << std::endl;
         system.set_load_factor(t_next);
         NewtonResult result;
@@ -79,7 +145,10 @@ namespace hyperelastic
                 "\n(adaptive load stepping is off: 'Load stepping/Adaptive')");
             if (smaller < parameters.minimum_increment)
               {
+                const std::string  limit = limit_point_diagnosis(system, t);
                 std::ostringstream message;
+                if (!limit.empty())
+                  message << limit << "\n";
                 message << "load step " << where.str()
                         << "\nthe increment cannot be halved again: " << smaller
                         << " < " << parameters.minimum_increment

@@ -1,4 +1,5 @@
-// The scene's Load stepping subsection: declaration, documentation and validation of its entries.
+// The scene's Load stepping subsection: declaration, documentation and
+// validation of its entries.
 #include <deal.II/base/utilities.h>
 
 #include <hyperelastic/base/error_handling.h>
@@ -16,6 +17,32 @@ namespace hyperelastic
   LoadSteppingParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Load stepping");
+    prm.declare_entry(
+      "Method",
+      "load control",
+      Selection("load control|arc length"),
+      "'load control': t goes from 0 to 1 in the steps of 'Loading/Number of "
+      "load steps' (cut back when Newton fails); a maximum of the load on "
+      "the path stops it. 'arc length': t becomes an unknown and each step "
+      "has a prescribed length in the free displacements (Crisfield's "
+      "cylindrical constraint |Delta u| = ds), so the path passes limit "
+      "points and t may decrease; two solves per iteration with the same "
+      "tangent and preconditioner; ds starts at the length of the first "
+      "load step's tangent predictor, adapts to the iteration count (towards "
+      "'Easy step iterations') and is halved on failure. The run ends at "
+      "'Maximum load factor' (landed on exactly) or after 'Maximum steps'; "
+      "the CSV gains a column 'stability'. Quasi-static scenes without "
+      "contact, displacement formulation.");
+    prm.declare_entry("Maximum load factor",
+                      "1",
+                      Double(),
+                      "Arc length: the run ends when the path reaches this "
+                      "load factor t.");
+    prm.declare_entry("Maximum steps",
+                      "200",
+                      Integer(1),
+                      "Arc length: the run ends after this many steps "
+                      "(the path may never reach 'Maximum load factor').");
     prm.declare_entry("Adaptive",
                       "true",
                       Bool(),
@@ -63,6 +90,14 @@ namespace hyperelastic
     minimum_increment    = prm.get_double("Minimum increment");
     easy_step_iterations = prm.get_integer("Easy step iterations");
     secant_predictor     = prm.get("Predictor") == "secant";
+    method = prm.get("Method") == "arc length" ? LoadControl::arc_length
+                                               : LoadControl::load_control;
+    maximum_load_factor = prm.get_double("Maximum load factor");
+    maximum_steps       = prm.get_integer("Maximum steps");
+    if (!std::isfinite(maximum_load_factor) || !(maximum_load_factor > 0.))
+      reject("Load stepping/Maximum load factor",
+             prm.get("Maximum load factor"),
+             "must be positive and finite");
     if (!(minimum_increment > 0.))
       reject("Load stepping/Minimum increment",
              prm.get("Minimum increment"),

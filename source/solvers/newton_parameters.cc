@@ -1,4 +1,5 @@
-// The scene's Newton subsection: declaration, documentation and validation of its entries.
+// The scene's Newton subsection: declaration, documentation and validation of
+// its entries.
 #include <deal.II/base/utilities.h>
 
 #include <hyperelastic/base/error_handling.h>
@@ -127,10 +128,10 @@ namespace hyperelastic
              prm.get("Maximum forcing term"),
              "must be positive");
     const std::string tangent_name = prm.get("Tangent");
-    tangent = tangent_name == "exact" ? NewtonTangent::exact
-              : tangent_name == "projected"
-                ? NewtonTangent::projected
-                : NewtonTangent::exact_then_projected;
+    tangent                    = tangent_name == "exact" ? NewtonTangent::exact
+                                 : tangent_name == "projected"
+                                   ? NewtonTangent::projected
+                                   : NewtonTangent::exact_then_projected;
     const std::string inverted = prm.get("Inverted elements at equilibrium");
     inverted_elements          = inverted == "reject" ? InvertedElements::reject
                                  : inverted == "warn" ? InvertedElements::warn

@@ -56,8 +56,8 @@ namespace hyperelastic
             {
               if (!owned.is_element(dofs[i]))
                 continue;
-              const std::size_t    k = owned.index_within_set(dofs[i]);
-              const unsigned int   c = fe.system_to_component_index(i).first;
+              const std::size_t  k = owned.index_within_set(dofs[i]);
+              const unsigned int c = fe.system_to_component_index(i).first;
               if (c >= dim)
                 continue; // a mixed pressure: zero in every mode
               const Tensor<1, dim> x = fe_values.quadrature_point(i) - centre;

@@ -44,13 +44,13 @@ namespace hyperelastic
   SaddlePointPreconditioner::extract_displacement_block(
     const TrilinosWrappers::SparseMatrix &matrix)
   {
-    this->matrix             = &matrix;
+    this->matrix              = &matrix;
     const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
     // The tangent's pattern never changes: after the first extraction the
     // block keeps its object and pattern and gets new values (so that an
     // AMG hierarchy built on it can be refreshed in place).
-    const bool first = block == nullptr;
-    const Epetra_Map map = owned_u.make_trilinos_map(comm, false);
+    const bool       first = block == nullptr;
+    const Epetra_Map map   = owned_u.make_trilinos_map(comm, false);
     if (first)
       block = std::make_unique<Epetra_CrsMatrix>(Copy, map, A.MaxNumEntries());
     std::vector<int>    columns;
@@ -73,19 +73,19 @@ namespace hyperelastic
               }
           }
         const int global_row = A.RowMap().GID(row);
-        const int error =
-          first ? block->InsertGlobalValues(global_row,
-                                            columns.size(),
-                                            values.data(),
-                                            columns.data()) :
-                  block->ReplaceGlobalValues(global_row,
-                                             columns.size(),
-                                             values.data(),
-                                             columns.data());
+        const int error      = first ? block->InsertGlobalValues(global_row,
+                                                            columns.size(),
+                                                            values.data(),
+                                                            columns.data())
+                                     : block->ReplaceGlobalValues(global_row,
+                                                             columns.size(),
+                                                             values.data(),
+                                                             columns.data());
         // Insert may warn (> 0) about allocation; Replace must find all.
         AssertThrow(first ? error >= 0 : error == 0,
                     ExcMessage("extracting the displacement block failed "
-                               "(Epetra error " + std::to_string(error) + ")"));
+                               "(Epetra error " +
+                               std::to_string(error) + ")"));
       }
     if (first)
       block->FillComplete(map, map);
@@ -120,14 +120,15 @@ namespace hyperelastic
   }
 
   void
-  SaddlePointPreconditioner::vmult(TrilinosWrappers::MPI::Vector       &dst,
-                                   const TrilinosWrappers::MPI::Vector &src) const
+  SaddlePointPreconditioner::vmult(
+    TrilinosWrappers::MPI::Vector       &dst,
+    const TrilinosWrappers::MPI::Vector &src) const
   {
-    const double *s   = src.trilinos_vector()[0];
-    double       *ru  = r_u.trilinos_vector()[0];
-    double       *yu  = y_u.trilinos_vector()[0];
-    double       *f   = full.trilinos_vector()[0];
-    const double *Bf  = product.trilinos_vector()[0];
+    const double *s  = src.trilinos_vector()[0];
+    double       *ru = r_u.trilinos_vector()[0];
+    double       *yu = y_u.trilinos_vector()[0];
+    double       *f  = full.trilinos_vector()[0];
+    const double *Bf = product.trilinos_vector()[0];
     for (std::size_t k = 0; k < u_rows.size(); ++k)
       ru[k] = s[u_rows[k]];
     amg->vmult(y_u, r_u);

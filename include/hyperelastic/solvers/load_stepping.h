@@ -6,6 +6,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
+#include <hyperelastic/base/linear_algebra.h>
 #include <hyperelastic/solvers/load_stepping_parameters.h>
 #include <hyperelastic/solvers/newton_solver.h>
 
@@ -13,9 +14,58 @@
 
 namespace hyperelastic
 {
+  /// The hooks of arc-length continuation, where the load factor t is an
+  /// unknown next to u: states (u, t), the free residual and its derivative
+  /// in t, and solves with the tangent.
+  class ContinuationSystem
+  {
+  public:
+    virtual ~ContinuationSystem() = default;
+
+    /// Makes (@p u, @p t) the state: u's free entries from @p u (owned
+    /// entries), its prescribed entries at their values at t. Collective.
+    virtual void
+    set_state(const VectorType &u, double t) = 0;
+
+    /// u of the state (owned entries).
+    virtual const VectorType &
+    state() const = 0;
+
+    /// The residual f_int - f_ext of the state on the free unknowns (zero
+    /// on prescribed rows) into @p r, and Newton's norms of it.
+    virtual ResidualNorms
+    free_residual(VectorType &r) = 0;
+
+    /// dr/dt at fixed free unknowns (the loads and the prescribed values
+    /// move with t), at the state, into @p r_t. Collective.
+    virtual void
+    load_derivative(VectorType &r_t) = 0;
+
+    /// Assembles the tangent at the state (prescribed rows decoupled).
+    virtual void
+    assemble_tangent() = 0;
+
+    /// Solves K x = b (b zero on prescribed rows, x too) with the last
+    /// assembled tangent, to the linear solver's tolerance; returns the
+    /// Krylov iterations.
+    virtual unsigned int
+    solve_tangent(const VectorType &b, VectorType &x) = 0;
+  };
+
+  /// The tangent's stiffness along the path at the system's state: du/dt
+  /// from K du_t = -dr/dt into @p du_t (assembling the tangent; @p r_t
+  /// holds -dr/dt after), and the Rayleigh quotient du_t . K du_t /
+  /// du_t . du_t = -du_t . dr/dt / |du_t|^2 as the result: positive on a
+  /// stable path, zero at a maximum of the load, negative beyond (Bergan's
+  /// current stiffness parameter, unnormalized). Collective.
+  double
+  stiffness_along_path(ContinuationSystem &system,
+                       VectorType         &r_t,
+                       VectorType         &du_t);
+
   /// A nonlinear system that depends on a load factor and can return to its
   /// last converged state.
-  class SteppedSystem : public NonlinearSystem
+  class SteppedSystem : public NonlinearSystem, public ContinuationSystem
   {
   public:
     virtual void
@@ -62,6 +112,21 @@ namespace hyperelastic
           &on_converged) const;
 
   private:
+    /// Load control: the loop over t with cut-backs.
+    void
+    run_load_control(
+      const NewtonSolver &newton,
+      SteppedSystem      &system,
+      const std::function<void(const LoadStep &, const NewtonResult &)>
+        &on_converged) const;
+
+    /// Load control gave up after the step from @p t failed: if the
+    /// tangent's stiffness along the path (stiffness_along_path()) at the
+    /// last converged state has fallen below a tenth of the unloaded one's,
+    /// the load passed a maximum: a sentence saying so (empty otherwise).
+    std::string
+    limit_point_diagnosis(SteppedSystem &system, double t) const;
+
     const LoadSteppingParameters parameters;
     const double                 end;
     const double                 nominal;

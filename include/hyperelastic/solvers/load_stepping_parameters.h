@@ -9,8 +9,20 @@ namespace hyperelastic
 {
   using dealii::ParameterHandler;
 
+  /// How the load factor advances ('Load stepping/Method').
+  enum class LoadControl
+  {
+    load_control, ///< t prescribed per step, cut back on failure
+    arc_length    ///< t an unknown, the step's length in (u, t) prescribed
+  };
+
   struct LoadSteppingParameters
   {
+    LoadControl method = LoadControl::load_control;
+    /// Arc length: the run ends at the first converged step with t >= this
+    /// (landed on it exactly) or after maximum_steps steps.
+    double       maximum_load_factor  = 1.;
+    unsigned int maximum_steps        = 200;
     bool         adaptive             = true;
     double       minimum_increment    = 1e-4;
     unsigned int easy_step_iterations = 6;

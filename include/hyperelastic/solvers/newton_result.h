@@ -41,6 +41,10 @@ namespace hyperelastic
     /// The line search tested the residual norm (no total potential)
     /// instead of the energy.
     bool residual_merit = false;
+    /// Arc length: the tangent's stiffness along the path at the converged
+    /// state over the unloaded one's (CSV column 'stability': 1 unloaded,
+    /// 0 at a maximum of the load, negative beyond).
+    double stability = std::numeric_limits<double>::quiet_NaN();
     unsigned int
     iterations() const
     {

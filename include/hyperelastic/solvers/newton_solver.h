@@ -167,6 +167,13 @@ namespace hyperelastic
     static std::string
     table(const NewtonResult &result);
 
+    /// The tolerances and limits Newton works with.
+    const NewtonParameters &
+    settings() const
+    {
+      return parameters;
+    }
+
   private:
     /// The Eisenstat-Walker forcing term for the next linear solve, from the
     /// rows so far of this Newton solve (0 for an exact solve).

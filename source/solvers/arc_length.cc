@@ -1,0 +1,219 @@
+// Arc-length continuation: predictor, bordered corrector, step-length control.
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/solvers/arc_length.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace hyperelastic
+{
+  ArcLengthStepper::ArcLengthStepper(const LoadSteppingParameters &parameters,
+                                     const NewtonParameters       &newton,
+                                     const double nominal_increment,
+                                     dealii::ConditionalOStream pcout)
+      : parameters(parameters)
+      , newton(newton)
+      , nominal(nominal_increment)
+      , pcout(pcout)
+  {
+  }
+
+  NewtonResult
+  ArcLengthStepper::step(SteppedSystem    &system,
+                         const VectorType &u_n,
+                         const double      t_n,
+                         const VectorType &du_t0,
+                         const double      ds,
+                         const double      sign,
+                         const double      land_at,
+                         VectorType       &delta,
+                         double           &t) const
+  {
+    const bool landing = std::isfinite(land_at);
+    // Predictor: along du/dt, |Delta u| = ds (landing: to t = land_at).
+    const double dt0 =
+      landing ? land_at - t_n : sign * ds / std::max(du_t0.l2_norm(), 1e-300);
+    delta = du_t0;
+    delta *= dt0;
+    t = t_n + dt0;
+    VectorType   trial(u_n), r(u_n), r_t(u_n), du_r(u_n), du_t(u_n);
+    NewtonResult result;
+    double       last_update = std::numeric_limits<double>::infinity();
+    pcout << "   iteration      residual        update          t  lin.its"
+          << std::endl;
+    for (unsigned int it = 1; it <= newton.max_iterations + 1; ++it)
+      {
+        trial = u_n;
+        trial += delta;
+        system.set_state(trial, t);
+        const ResidualNorms norms = system.free_residual(r);
+        NewtonIteration     row;
+        row.iteration = it;
+        row.residual  = norms.residual;
+        row.update    = it == 1 ? 0. : last_update;
+        if (!std::isfinite(norms.residual))
+          throw ConvergenceFailure(
+            "the residual is not finite (an element may have inverted with "
+            "a model undefined there)");
+        const double target =
+          std::max({newton.absolute_residual_tolerance,
+                    newton.relative_residual_tolerance * norms.scale,
+                    norms.noise});
+        if (it > 1 && norms.residual <= target &&
+            last_update <= newton.update_tolerance *
+                             std::max(system.solution_scale(), trial.l2_norm()))
+          {
+            result.history.back().residual = norms.residual;
+            return result;
+          }
+        if (it > newton.max_iterations)
+          break;
+        system.assemble_tangent();
+        r *= -1.;
+        unsigned int linear = system.solve_tangent(r, du_r);
+        double       dt     = 0.;
+        if (!landing)
+          {
+            system.load_derivative(r_t);
+            r_t *= -1.;
+            linear += system.solve_tangent(r_t, du_t);
+            // |delta + du_r + dt du_t|^2 = ds^2.
+            VectorType base(delta);
+            base += du_r;
+            const double a    = du_t * du_t;
+            const double b    = 2. * (du_t * base);
+            const double c    = base * base - ds * ds;
+            const double disc = b * b - 4. * a * c;
+            if (!(disc >= 0.) || !(a > 0.))
+              throw ConvergenceFailure(
+                "arc length: the constraint has no real root (the step "
+                "leaves the linearized path)");
+            const double q  = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+            const double r1 = q / a, r2 = q != 0. ? c / q : r1;
+            // The root whose increment turns least from the last one.
+            const auto turn = [&](const double root) {
+              return (base * delta) + root * (du_t * delta);
+            };
+            dt = turn(r1) >= turn(r2) ? r1 : r2;
+          }
+        VectorType du(du_r);
+        if (dt != 0.)
+          du.add(dt, du_t);
+        delta += du;
+        t += dt;
+        last_update           = du.l2_norm();
+        row.linear_iterations = linear;
+        result.history.push_back(row);
+        pcout << std::setw(8) << it << std::scientific << std::setprecision(3)
+              << std::setw(14) << row.residual << std::setw(14) << last_update
+              << std::defaultfloat << std::setprecision(6) << std::setw(11) << t
+              << std::setw(9) << linear << std::endl;
+      }
+    throw ConvergenceFailure("arc length: no convergence in " +
+                             std::to_string(newton.max_iterations) +
+                             " iterations (Newton/Max iterations)");
+  }
+
+  void
+  ArcLengthStepper::run(
+    SteppedSystem &system,
+    const std::function<void(const LoadStep &, const NewtonResult &)>
+      &on_converged) const
+  {
+    system.store_converged_state();
+    VectorType u_n(system.state());
+    double     t_n = 0.;
+    VectorType r_t(u_n), du_t(u_n), delta(u_n), last_delta(u_n);
+    bool       have_last = false;
+    system.set_state(u_n, t_n);
+    // The stiffness along the path, unloaded: the scale of 'stability'.
+    const double unloaded = stiffness_along_path(system, r_t, du_t);
+    // The first step: the tangent predictor of the first nominal load step
+    // (and the longest step).
+    const double first_ds = nominal * du_t.l2_norm();
+    if (!(first_ds > 0.))
+      throw ConvergenceFailure(
+        "arc length: the loads do not move the free unknowns (dr/dt = 0 at "
+        "the start): nothing to follow");
+    double   ds = first_ds;
+    LoadStep step;
+    while (step.step < parameters.maximum_steps)
+      {
+        // Land on the maximum load factor rather than pass it upwards.
+        const double sign =
+          have_last ? ((du_t * last_delta) >= 0. ? 1. : -1.) : 1.;
+        const double dt_predicted = sign * ds / du_t.l2_norm();
+        const double land_at =
+          (t_n < parameters.maximum_load_factor &&
+           t_n + dt_predicted >= parameters.maximum_load_factor)
+            ? parameters.maximum_load_factor
+            : std::numeric_limits<double>::quiet_NaN();
+        pcout << "\nArc-length step " << step.step + 1 << ": from t = " << t_n
+              << ", length " << ds
+              << (std::isfinite(land_at) ? " (landing on the maximum load "
+                                           "factor)"
+                                         : "")
+              << std::endl;
+        double       t = t_n;
+        NewtonResult result;
+        try
+          {
+            result =
+              this->step(system, u_n, t_n, du_t, ds, sign, land_at, delta, t);
+            system.verify_converged_state();
+          }
+        catch (const ConvergenceFailure &failure)
+          {
+            system.restore_converged_state();
+            system.set_state(u_n, t_n);
+            const double smaller = 0.5 * ds;
+            if (smaller < parameters.minimum_increment * first_ds)
+              {
+                std::ostringstream message;
+                message << "arc-length step from t = " << t_n << ": "
+                        << failure.what()
+                        << "\nthe arc length cannot be halved again: "
+                        << smaller << " < " << parameters.minimum_increment
+                        << " times the first one ('Load stepping/Minimum "
+                           "increment'); the last converged state is t = "
+                        << t_n << " (step " << step.step << ")";
+                throw ConvergenceFailure(message.str());
+              }
+            ++step.cut_backs;
+            ds                     = smaller;
+            const std::string what = failure.what();
+            pcout << "   cut-back " << step.cut_backs << ": "
+                  << what.substr(0, what.find('\n'))
+                  << "\n   arc length halved to " << ds << std::endl;
+            // The predictor direction of u_n again (the tangent was
+            // overwritten by the failed iterations).
+            stiffness_along_path(system, r_t, du_t);
+            continue;
+          }
+        system.store_converged_state();
+        last_delta = delta;
+        have_last  = true;
+        u_n        = system.state();
+        step.step += 1;
+        step.increment   = t - t_n;
+        step.load_factor = t;
+        t_n              = t;
+        // The next predictor, and the stability of the converged state.
+        system.set_state(u_n, t_n);
+        result.stability = stiffness_along_path(system, r_t, du_t) / unloaded;
+        on_converged(step, result);
+        step.cut_backs = 0;
+        if (std::isfinite(land_at))
+          return;
+        const double ratio =
+          std::sqrt(double(parameters.easy_step_iterations) /
+                    std::max<std::size_t>(result.iterations(), 1));
+        ds = std::min(first_ds, ds * std::clamp(ratio, 0.5, 2.));
+      }
+    pcout << "\nArc length: 'Load stepping/Maximum steps' = "
+          << parameters.maximum_steps << " reached at t = " << t_n << std::endl;
+  }
+} // namespace hyperelastic

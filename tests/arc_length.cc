@@ -1,0 +1,167 @@
+// Arc-length continuation and the limit-point diagnosis (issue 28) on the
+// exact check of the reference: St. Venant-Kirchhoff with lambda = 0 (E = 1,
+// nu = 0, mu = 1/2), a bar [0, 2] x [0, 1] (x [0, 1]) with u_x = 0 at x = 0
+// and u_y = 0 at y = 0 (and u_z = 0 at z = 0), compressed by the dead
+// traction -0.25 t on its end x = 2. The state is homogeneous: stretch l
+// along x, lateral stretches 1, and P11 = mu l (l^2 - 1) = -0.25 t gives
+//   t = 2 l (1 - l^2),
+// whose maximum 4 / (3 sqrt 3) = 0.7698 lies at l = 1 / sqrt 3.
+//   arc_length DIM  'Load stepping/Method = arc length' for 30 steps: every
+//       converged (l, t) lies on the curve (1e-8 of the peak load), the path
+//       passes the maximum (its largest t within 1e-3 of it) and follows the
+//       softening branch down to l < 0.45 with t decreasing there; the CSV's
+//       'stability', the stiffness along the path over the unloaded one,
+//       is the homogeneous bar's dP11/dl / mu = (3 l^2 - 1) / 2 (1e-6):
+//       positive before the maximum, negative after it.
+//   load_control DIM  the same scene under load control to t = 1: the run
+//       stops with "the load passed a maximum at t = T; use Load stepping/
+//       Method = arc length", T within [0.74, 0.7698].
+#include <deal.II/base/mpi.h>
+
+#include <hyperelastic/base/error_handling.h>
+
+#include "support/checker.h"
+#include "support/scene_run.h"
+#include "support/scene_text.h"
+#include "support/summary_columns.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+namespace
+{
+  using namespace dealii;
+  using namespace hyperelastic;
+  using namespace hyperelastic::testing;
+
+  const double peak_load    = 4. / (3. * std::sqrt(3.));
+  const double peak_stretch = 1. / std::sqrt(3.);
+
+  std::string
+  compressed_bar(const int dim, const std::string &stepping)
+  {
+    const bool three = dim == 3;
+    return subsection("Problem", entry("Dimension", std::to_string(dim))) +
+           subsection("Mesh",
+                      entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
+                        entry("Upper corner", three ? "2, 1, 1" : "2, 1") +
+                        entry("Subdivisions", three ? "4, 2, 2" : "8, 4")) +
+           subsection("Material",
+                      entry("Model", "St. Venant-Kirchhoff") +
+                        entry("Young's modulus", "1") +
+                        entry("Poisson's ratio", "0")) +
+           subsection("Loading", entry("Number of load steps", "10")) +
+           dirichlet(1, 0, "x", "0") + dirichlet(2, 2, "y", "0") +
+           (three ? dirichlet(3, 4, "z", "0") : "") +
+           subsection("Traction 1",
+                      entry("Boundary id", "1") +
+                        entry("Traction",
+                              three ? "-0.25*t; 0; 0" : "-0.25*t; 0")) +
+           subsection("Newton",
+                      entry("Absolute residual tolerance", "1e-13") +
+                        entry("Relative residual tolerance", "1e-12")) +
+           subsection("Linear solver", entry("Relative tolerance", "1e-12")) +
+           subsection("Load stepping", stepping) +
+           subsection("Output", entry("Write VTU", "false"));
+  }
+
+  template <int dim>
+  void
+  arc_length(Checker &checker)
+  {
+    const std::string tag = std::to_string(dim) + "D StVK bar, arc length: ";
+    const auto        problem = run_scene<dim>(compressed_bar(
+      dim, entry("Method", "arc length") + entry("Maximum steps", "30")));
+    const auto       &steps   = problem->summaries();
+    double            worst = 0., largest_t = 0., smallest_l = 1.;
+    bool              decreasing      = true;
+    double            stability_error = 0., most_negative = 0.;
+    double            last_t = 0.;
+    for (const auto &s : steps)
+      {
+        const double l = column(s, "deformed_max_x") / 2.;
+        const double t = s.load_factor;
+        worst          = std::max(worst, std::abs(t - 2. * l * (1. - l * l)));
+        largest_t      = std::max(largest_t, t);
+        smallest_l     = std::min(smallest_l, l);
+        if (l < peak_stretch - 0.02)
+          decreasing = decreasing && t < last_t;
+        const double stability = column(s, "stability");
+        stability_error =
+          std::max(stability_error,
+                   std::abs(stability - 0.5 * (3. * l * l - 1.)));
+        if (std::isnan(stability))
+          stability_error = stability;
+        most_negative = std::min(most_negative, stability);
+        last_t        = t;
+      }
+    checker.at_least(tag + "converged steps", steps.size(), 30);
+    checker.at_most(tag + "largest |t - 2 l (1 - l^2)| / peak load",
+                    worst / peak_load,
+                    1e-8);
+    checker.close(tag + "largest t on the path vs the peak 4 / (3 sqrt 3)",
+                  largest_t,
+                  peak_load,
+                  peak_load,
+                  1e-3);
+    checker.below(tag + "smallest stretch reached (softening branch)",
+                  smallest_l,
+                  0.45);
+    checker.is_true(tag + "t decreases along the softening branch", decreasing);
+    checker.at_most(tag + "largest |stability - (3 l^2 - 1) / 2|",
+                    stability_error,
+                    1e-6);
+    checker.below(tag + "smallest stability (negative past the maximum)",
+                  most_negative,
+                  -0.1);
+  }
+
+  template <int dim>
+  void
+  load_control(Checker &checker)
+  {
+    const std::string tag = std::to_string(dim) + "D StVK bar, load control: ";
+    std::string       message;
+    try
+      {
+        run_scene<dim>(compressed_bar(dim, entry("Method", "load control")));
+      }
+    catch (const ConvergenceFailure &e)
+      {
+        message = e.what();
+      }
+    const std::string said = "the load passed a maximum at t = ";
+    const auto        at   = message.find(said);
+    checker.is_true(tag + "stops with \"" + said + "...\"",
+                    at != std::string::npos);
+    checker.is_true(tag + "names the remedy",
+                    message.find("use Load stepping/Method = arc length") !=
+                      std::string::npos);
+    if (at == std::string::npos)
+      return;
+    const double t = std::atof(message.c_str() + at + said.size());
+    checker.at_least(tag + "the maximum's t", t, 0.74);
+    checker.at_most(tag + "the maximum's t", t, peak_load);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  Checker checker(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+  const std::string which  = argc > 1 ? argv[1] : "";
+  const int         dim    = argc > 2 ? std::atoi(argv[2]) : 2;
+  const int         status = run_and_report(
+    [&]() {
+      if (which == "arc_length")
+        dim == 2 ? arc_length<2>(checker) : arc_length<3>(checker);
+      else if (which == "load_control")
+        dim == 2 ? load_control<2>(checker) : load_control<3>(checker);
+      else
+        throw InputError("usage: arc_length arc_length|load_control DIM");
+    },
+    MPI_COMM_WORLD);
+  return checker.exit_code(status);
+}
