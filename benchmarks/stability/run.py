@@ -1,0 +1,188 @@
+#!/usr/bin/python3
+"""Benchmark of the stability round (issue 28): Newton's tangent policies on
+the extreme crush, and load control against arc length at limit points.
+
+  crush      the cube of stress test 25 (6 x 6 x 6 boxes, E = 1, nu = 0.4,
+             stable neo-Hookean, clamped top and bottom, the top pushed down
+             to 10 % of the height in one nominal load step), for each
+             'Newton/Tangent' (exact; projected; exact, projected on
+             failure) with 'Newton/Max iterations' 20 (the default) and 100:
+             whether it completes, load steps, Newton iterations (total and
+             largest per step), cut-backs, the last converged t, wall time;
+  crush path the same crush by arc length ('Number of load steps' 20, 80
+             steps): t and 'stability' per step, which show where the
+             displacement-controlled path folds;
+  bar        the St. Venant-Kirchhoff bar of parameters/limit_point_bar_2d.prm
+             under load control (to its stop at the maximum) and by arc
+             length (24 steps): steps, Newton iterations, the largest t,
+             wall time.
+
+Writes crush.csv, crush_path.csv, bar.csv and stability.png here.
+
+  /usr/bin/python3 benchmarks/stability/run.py          # everything (~3 min)
+  /usr/bin/python3 benchmarks/stability/run.py --plot   # redraw from the CSVs
+"""
+import argparse
+import csv
+import os
+import subprocess
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+EXE = os.path.join(ROOT, "build", "hyperelastic")
+OUT = os.path.join(HERE, "out")
+
+CRUSH = """
+subsection Problem
+  set Dimension = 3
+end
+subsection Mesh
+  set Upper corner = 1, 1, 1
+  set Subdivisions = 6, 6, 6
+end
+subsection Material
+  set Model = stable neo-Hookean
+  set Young's modulus = 1
+  set Poisson's ratio = 0.4
+end
+subsection Loading
+  set Number of load steps = {steps}
+end
+subsection Load stepping
+  set Method = {method}
+  set Maximum steps = 80
+end
+subsection Dirichlet 1
+  set Boundary id = 4
+  set Components = x, y, z
+  set Displacement = 0; 0; 0
+end
+subsection Dirichlet 2
+  set Boundary id = 5
+  set Components = x, y, z
+  set Displacement = 0; 0; -0.9*t
+end
+subsection Newton
+  set Tangent = {tangent}
+  set Max iterations = {iterations}
+end
+subsection Output
+  set Write VTU = false
+  set Directory = {out}
+  set Base name = {name}
+end
+"""
+
+
+def run(name, text):
+    """Runs a scene on 1 rank; returns (exit code, wall time, CSV rows)."""
+    os.makedirs(OUT, exist_ok=True)
+    scene = os.path.join(OUT, name + ".prm")
+    with open(scene, "w") as f:
+        f.write(text)
+    start = time.time()
+    code = subprocess.run([EXE, scene], stdout=subprocess.DEVNULL,
+                          stderr=subprocess.DEVNULL).returncode
+    wall = time.time() - start
+    rows = []
+    path = os.path.join(OUT, name + ".csv")
+    if os.path.exists(path):
+        with open(path) as f:
+            rows = list(csv.DictReader(f))
+    return code, wall, rows
+
+
+def crush():
+    table = []
+    for tangent in ("exact", "projected", "exact, projected on failure"):
+        for iterations in (20, 100):
+            name = "crush_%s_%d" % (tangent.split(",")[0], iterations)
+            if "failure" in tangent:
+                name = "crush_fallback_%d" % iterations
+            code, wall, rows = run(name, CRUSH.format(
+                steps=1, method="load control", tangent=tangent,
+                iterations=iterations, out=OUT, name=name))
+            its = [int(r["newton_iterations"]) for r in rows]
+            table.append({
+                "tangent": tangent, "max_iterations": iterations,
+                "completed": int(code == 0), "load_steps": len(rows),
+                "newton_iterations": sum(its),
+                "largest_per_step": max(its) if its else 0,
+                "cut_backs": sum(int(r["cut_backs"]) for r in rows),
+                "last_t": float(rows[-1]["load_factor"]) if rows else 0.,
+                "wall_s": round(wall, 2)})
+            print(table[-1])
+    write(os.path.join(HERE, "crush.csv"), table)
+    code, wall, rows = run("crush_path", CRUSH.format(
+        steps=20, method="arc length",
+        tangent="exact, projected on failure", iterations=20, out=OUT,
+        name="crush_path"))
+    path = [{"step": r["step"], "t": r["load_factor"],
+             "newton_iterations": r["newton_iterations"],
+             "stability": r["stability"], "min_J": r["min_J"]} for r in rows]
+    write(os.path.join(HERE, "crush_path.csv"), path)
+
+
+def bar():
+    with open(os.path.join(ROOT, "parameters", "limit_point_bar_2d.prm")) as f:
+        base = f.read().replace("set Directory = output",
+                                "set Directory = " + OUT)
+    table = []
+    for method in ("load control", "arc length"):
+        name = "bar_" + method.replace(" ", "_")
+        text = base.replace("set Method        = arc length",
+                            "set Method = " + method)
+        text = text.replace("set Base name = limit_point_bar",
+                            "set Base name = " + name)
+        code, wall, rows = run(name, text)
+        table.append({
+            "method": method, "completed": int(code == 0),
+            "steps": len(rows),
+            "newton_iterations":
+                sum(int(r["newton_iterations"]) for r in rows),
+            "largest_t": max(float(r["load_factor"]) for r in rows),
+            "smallest_stretch":
+                min(float(r["deformed_max_x"]) / 2. for r in rows),
+            "wall_s": round(wall, 2)})
+        print(table[-1])
+    write(os.path.join(HERE, "bar.csv"), table)
+
+
+def write(path, rows):
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)
+
+
+def plot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    with open(os.path.join(HERE, "crush_path.csv")) as f:
+        path = list(csv.DictReader(f))
+    steps = [int(r["step"]) for r in path]
+    fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4))
+    a.plot(steps, [float(r["t"]) for r in path], "o-", ms=3)
+    a.axhline(1., color="grey", lw=0.5)
+    a.set_xlabel("arc-length step")
+    a.set_ylabel("load factor t (top pushed down by 0.9 t)")
+    a.set_title("crush path by arc length: folds of t")
+    b.plot(steps, [float(r["stability"]) for r in path], "o-", ms=3)
+    b.axhline(0., color="grey", lw=0.5)
+    b.set_xlabel("arc-length step")
+    b.set_ylabel("stability (stiffness along the path / unloaded)")
+    b.set_title("stability: zero at each fold")
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "stability.png"), dpi=110)
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--plot", action="store_true")
+    args = parser.parse_args()
+    if not args.plot:
+        crush()
+        bar()
+    plot()
