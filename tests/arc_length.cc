@@ -6,13 +6,19 @@
 // along x, lateral stretches 1, and P11 = mu l (l^2 - 1) = -0.25 t gives
 //   t = 2 l (1 - l^2),
 // whose maximum 4 / (3 sqrt 3) = 0.7698 lies at l = 1 / sqrt 3.
-//   arc_length DIM  'Load stepping/Method = arc length' for 30 steps: every
+//   arc_length DIM [DEGREE]  'Load stepping/Method = arc length' for 30
+//       steps, P1 (default) or P2 elements: every
 //       converged (l, t) lies on the curve (1e-8 of the peak load), the path
 //       passes the maximum (its largest t within 1e-3 of it) and follows the
 //       softening branch down to l < 0.45 with t decreasing there; the CSV's
 //       'stability', the stiffness along the path over the unloaded one,
 //       is the homogeneous bar's dP11/dl / mu = (3 l^2 - 1) / 2 (1e-6):
 //       positive before the maximum, negative after it.
+//   displacement DIM  arc length with a prescribed end displacement instead
+//       (u_x = -0.8 t at x = 2: l = 1 - 0.4 t) to 'Maximum load factor' 1:
+//       every step on l = 1 - 0.4 t (1e-10), the end's reaction equal to
+//       |P11| = mu l |l^2 - 1| times its area (1e-8 of the largest), and
+//       the run lands on t = 1 exactly.
 //   load_control DIM  the same scene under load control to t = 1: the run
 //       stops with "the load passed a maximum at t = T; use Load stepping/
 //       Method = arc length", T within [0.74, 0.7698].
@@ -39,10 +45,15 @@ namespace
   const double peak_stretch = 1. / std::sqrt(3.);
 
   std::string
-  compressed_bar(const int dim, const std::string &stepping)
+  compressed_bar(const int          dim,
+                 const std::string &stepping,
+                 const unsigned int degree = 1)
   {
     const bool three = dim == 3;
-    return subsection("Problem", entry("Dimension", std::to_string(dim))) +
+    return subsection("Problem",
+                      entry("Dimension", std::to_string(dim)) +
+                        entry("Finite element degree",
+                              std::to_string(degree))) +
            subsection("Mesh",
                       entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
                         entry("Upper corner", three ? "2, 1, 1" : "2, 1") +
@@ -68,16 +79,20 @@ namespace
 
   template <int dim>
   void
-  arc_length(Checker &checker)
+  arc_length(Checker &checker, const unsigned int degree)
   {
-    const std::string tag = std::to_string(dim) + "D StVK bar, arc length: ";
-    const auto        problem = run_scene<dim>(compressed_bar(
-      dim, entry("Method", "arc length") + entry("Maximum steps", "30")));
-    const auto       &steps   = problem->summaries();
-    double            worst = 0., largest_t = 0., smallest_l = 1.;
-    bool              decreasing      = true;
-    double            stability_error = 0., most_negative = 0.;
-    double            last_t = 0.;
+    const std::string tag = std::to_string(dim) + "D StVK bar, P" +
+                            std::to_string(degree) + ", arc length: ";
+    const auto problem =
+      run_scene<dim>(compressed_bar(dim,
+                                    entry("Method", "arc length") +
+                                      entry("Maximum steps", "30"),
+                                    degree));
+    const auto &steps = problem->summaries();
+    double      worst = 0., largest_t = 0., smallest_l = 1.;
+    bool        decreasing      = true;
+    double      stability_error = 0., most_negative = 0.;
+    double      last_t = 0.;
     for (const auto &s : steps)
       {
         const double l = column(s, "deformed_max_x") / 2.;
@@ -119,6 +134,43 @@ namespace
 
   template <int dim>
   void
+  displacement(Checker &checker)
+  {
+    const std::string tag =
+      std::to_string(dim) + "D StVK bar, arc length, end displaced: ";
+    std::string scene = compressed_bar(dim, entry("Method", "arc length"));
+    // The traction becomes a prescribed end displacement.
+    const std::string traction = dim == 2 ? "-0.25*t; 0" : "-0.25*t; 0; 0";
+    scene.replace(scene.find(traction),
+                  traction.size(),
+                  dim == 2 ? "0; 0" : "0; 0; 0");
+    scene += dirichlet(4, 1, "x", "-0.8*t");
+    const auto  problem       = run_scene<dim>(scene);
+    const auto &steps         = problem->summaries();
+    double      stretch_error = 0., reaction_error = 0., largest = 0.;
+    for (const auto &s : steps)
+      {
+        const double l = column(s, "deformed_max_x") / 2.;
+        stretch_error =
+          std::max(stretch_error, std::abs(l - (1. - 0.4 * s.load_factor)));
+        const double exact = 0.5 * l * std::abs(l * l - 1.);
+        reaction_error =
+          std::max(reaction_error,
+                   std::abs(std::abs(column(s, "reaction_1_x")) - exact));
+        largest = std::max(largest, exact);
+      }
+    checker.at_least(tag + "converged steps", steps.size(), 3);
+    checker.at_most(tag + "largest |l - (1 - 0.4 t)|", stretch_error, 1e-10);
+    checker.at_most(tag + "largest ||reaction_1_x| - mu l |l^2 - 1|| / "
+                          "largest",
+                    reaction_error / largest,
+                    1e-8);
+    checker.is_true(tag + "ends on t = 1 exactly ('Maximum load factor')",
+                    !steps.empty() && steps.back().load_factor == 1.);
+  }
+
+  template <int dim>
+  void
   load_control(Checker &checker)
   {
     const std::string tag = std::to_string(dim) + "D StVK bar, load control: ";
@@ -155,12 +207,18 @@ main(int argc, char **argv)
   const int         dim    = argc > 2 ? std::atoi(argv[2]) : 2;
   const int         status = run_and_report(
     [&]() {
+      const unsigned int degree = argc > 3 ? std::atoi(argv[3]) : 1;
       if (which == "arc_length")
-        dim == 2 ? arc_length<2>(checker) : arc_length<3>(checker);
+        dim == 2 ? arc_length<2>(checker, degree)
+                         : arc_length<3>(checker, degree);
+      else if (which == "displacement")
+        dim == 2 ? displacement<2>(checker) : displacement<3>(checker);
       else if (which == "load_control")
         dim == 2 ? load_control<2>(checker) : load_control<3>(checker);
       else
-        throw InputError("usage: arc_length arc_length|load_control DIM");
+        throw InputError(
+          "usage: arc_length arc_length DIM [DEGREE] | displacement DIM | "
+                  "load_control DIM");
     },
     MPI_COMM_WORLD);
   return checker.exit_code(status);
