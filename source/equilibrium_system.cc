@@ -42,6 +42,16 @@ namespace hyperelastic
                           &previous.u})
       v->reinit(owned_dofs, comm);
     u_ghosted.reinit(owned_dofs, relevant_dofs, comm);
+    const IndexSet pressures =
+      parts.formulation.pressure_dofs(parts.dof_handler);
+    if (Utilities::MPI::max(pressures.n_elements(), comm) > 0)
+      {
+        displacement_mask.reinit(owned_dofs, comm);
+        for (const auto i : owned_dofs)
+          if (!pressures.is_element(i))
+            displacement_mask(i) = 1.;
+        displacement_mask.compress(VectorOperation::insert);
+      }
   }
 
   template <int dim>
@@ -422,6 +432,18 @@ namespace hyperelastic
       tangent, x, b, parts.parameters.linear_solver.relative_tolerance);
     homogeneous_constraints.distribute(x);
     return iterations;
+  }
+
+  template <int dim>
+  double
+  EquilibriumSystem<dim>::path_product(const VectorType &a,
+                                       const VectorType &b) const
+  {
+    if (displacement_mask.size() == 0)
+      return a * b;
+    VectorType masked(a);
+    masked.scale(displacement_mask);
+    return masked * b;
   }
 
   template class EquilibriumSystem<2>;

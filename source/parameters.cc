@@ -133,10 +133,11 @@ namespace hyperelastic
                                    : "Contact/Obstacle 1/Type",
               contact.self_contact ? "true" : "(an obstacle)",
               "does not work with contact yet");
-        if (problem.formulation != "displacement")
+        if (problem.formulation == "stiffness warping")
           arc("Problem/Formulation",
               problem.formulation,
-              "works with the displacement formulation only");
+              "does not work with stiffness warping (a linearization per "
+              "step, not a path)");
       }
     // Accepting inverted equilibria needs a model defined at J <= 0.
     if (newton.inverted_elements == InvertedElements::warn)

@@ -19,6 +19,12 @@
 //       every step on l = 1 - 0.4 t (1e-10), the end's reaction equal to
 //       |P11| = mu l |l^2 - 1| times its area (1e-8 of the largest), and
 //       the run lands on t = 1 exactly.
+//   mixed DIM  arc length with the mixed formulation (default element):
+//       a decoupled neo-Hookean bar (mu = 1, Lame lambda = 4) pulled by the
+//       dead traction 0.5 t to 'Maximum load factor' 1: every step's P11 =
+//       0.5 t equals the analytic uniaxial stress at its stretch
+//       (support/analytic_bar.h; 1e-8), the pressures left out of the arc
+//       length, and the run lands on t = 1.
 //   load_control DIM  the same scene under load control to t = 1: the run
 //       stops with "the load passed a maximum at t = T; use Load stepping/
 //       Method = arc length", T within [0.74, 0.7698].
@@ -26,6 +32,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 
+#include "support/analytic_bar.h"
 #include "support/checker.h"
 #include "support/scene_run.h"
 #include "support/scene_text.h"
@@ -171,6 +178,56 @@ namespace
 
   template <int dim>
   void
+  mixed(Checker &checker)
+  {
+    const std::string tag   = std::to_string(dim) + "D mixed bar, arc length: ";
+    const bool        three = dim == 3;
+    const double      mu = 1., lambda = 4., kappa = lambda + 2. / 3. * mu;
+    const std::string scene =
+      subsection("Problem",
+                 entry("Dimension", std::to_string(dim)) +
+                   entry("Formulation", "mixed")) +
+      subsection("Mesh",
+                 entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
+                   entry("Upper corner", three ? "2, 1, 1" : "2, 1") +
+                   entry("Subdivisions", three ? "3, 2, 2" : "4, 2")) +
+      material_section("decoupled neo-Hookean",
+                       entry("Elastic constants", "Lame") +
+                         entry("Shear modulus", number(mu)) +
+                         entry("Lame lambda", number(lambda)),
+                       lame_parameters(mu, lambda)) +
+      subsection("Loading", entry("Number of load steps", "4")) +
+      dirichlet(1, 0, "x", "0") + dirichlet(2, 2, "y", "0") +
+      (three ? dirichlet(3, 4, "z", "0") : "") +
+      subsection("Traction 1",
+                 entry("Boundary id", "1") +
+                   entry("Traction", three ? "0.5*t; 0; 0" : "0.5*t; 0")) +
+      subsection("Newton",
+                 entry("Relative residual tolerance", "1e-13") +
+                   entry("Update tolerance", "1e-12")) +
+      subsection("Linear solver", entry("Type", "direct")) +
+      subsection("Load stepping", entry("Method", "arc length")) +
+      subsection("Output", entry("Write VTU", "false"));
+    const auto  problem = run_scene<dim>(scene);
+    const auto &steps   = problem->summaries();
+    double      worst   = 0.;
+    for (const auto &s : steps)
+      {
+        const double l = column(s, "deformed_max_x") / 2.;
+        worst =
+          std::max(worst,
+                   std::abs(
+                     uniaxial_mooney_rivlin(dim, l, 0.5 * mu, 0., kappa).P11 -
+                     0.5 * s.load_factor));
+      }
+    checker.at_least(tag + "converged steps", steps.size(), 3);
+    checker.at_most(tag + "largest |P11(l) - 0.5 t| / 0.5", worst / 0.5, 1e-8);
+    checker.is_true(tag + "ends on t = 1 exactly ('Maximum load factor')",
+                    !steps.empty() && steps.back().load_factor == 1.);
+  }
+
+  template <int dim>
+  void
   load_control(Checker &checker)
   {
     const std::string tag = std::to_string(dim) + "D StVK bar, load control: ";
@@ -211,6 +268,8 @@ main(int argc, char **argv)
       if (which == "arc_length")
         dim == 2 ? arc_length<2>(checker, degree)
                          : arc_length<3>(checker, degree);
+      else if (which == "mixed")
+        dim == 2 ? mixed<2>(checker) : mixed<3>(checker);
       else if (which == "displacement")
         dim == 2 ? displacement<2>(checker) : displacement<3>(checker);
       else if (which == "load_control")
@@ -218,7 +277,7 @@ main(int argc, char **argv)
       else
         throw InputError(
           "usage: arc_length arc_length DIM [DEGREE] | displacement DIM | "
-                  "load_control DIM");
+                  "mixed DIM | load_control DIM");
     },
     MPI_COMM_WORLD);
   return checker.exit_code(status);

@@ -155,6 +155,8 @@ namespace hyperelastic
     assemble_tangent() override;
     unsigned int
     solve_tangent(const VectorType &b, VectorType &x) override;
+    double
+    path_product(const VectorType &a, const VectorType &b) const override;
 
   private:
     /// Assembles the forces at u_ghosted into internal_force, external_force
@@ -194,6 +196,10 @@ namespace hyperelastic
     double                           solution_size  = 0.;
     double                           min_J          = 1.;
     dealii::types::global_cell_index inverted_cells = 0;
+
+    /// 1 on the displacement dofs, 0 on a mixed formulation's pressures
+    /// (empty without pressures): arc length's inner product.
+    VectorType displacement_mask;
 
     /// The last converged state and the one before it.
     ConvergedState converged, previous;

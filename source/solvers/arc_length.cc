@@ -35,7 +35,10 @@ namespace hyperelastic
     const bool landing = std::isfinite(land_at);
     // Predictor: along du/dt, |Delta u| = ds (landing: to t = land_at).
     const double dt0 =
-      landing ? land_at - t_n : sign * ds / std::max(du_t0.l2_norm(), 1e-300);
+      landing
+        ? land_at - t_n
+        : sign * ds /
+            std::max(std::sqrt(system.path_product(du_t0, du_t0)), 1e-300);
     delta = du_t0;
     delta *= dt0;
     t = t_n + dt0;
@@ -83,9 +86,9 @@ namespace hyperelastic
             // |delta + du_r + dt du_t|^2 = ds^2.
             VectorType base(delta);
             base += du_r;
-            const double a    = du_t * du_t;
-            const double b    = 2. * (du_t * base);
-            const double c    = base * base - ds * ds;
+            const double a    = system.path_product(du_t, du_t);
+            const double b    = 2. * system.path_product(du_t, base);
+            const double c    = system.path_product(base, base) - ds * ds;
             const double disc = b * b - 4. * a * c;
             if (!(disc >= 0.) || !(a > 0.))
               throw ConvergenceFailure(
@@ -95,7 +98,8 @@ namespace hyperelastic
             const double r1 = q / a, r2 = q != 0. ? c / q : r1;
             // The root whose increment turns least from the last one.
             const auto turn = [&](const double root) {
-              return (base * delta) + root * (du_t * delta);
+              return system.path_product(base, delta) +
+                     root * system.path_product(du_t, delta);
             };
             dt = turn(r1) >= turn(r2) ? r1 : r2;
           }
@@ -133,7 +137,8 @@ namespace hyperelastic
     const double unloaded = stiffness_along_path(system, r_t, du_t);
     // The first step: the tangent predictor of the first nominal load step
     // (and the longest step).
-    const double first_ds = nominal * du_t.l2_norm();
+    const double first_ds =
+      nominal * std::sqrt(system.path_product(du_t, du_t));
     if (!(first_ds > 0.))
       throw ConvergenceFailure(
         "arc length: the loads do not move the free unknowns (dr/dt = 0 at "
@@ -144,8 +149,10 @@ namespace hyperelastic
       {
         // Land on the maximum load factor rather than pass it upwards.
         const double sign =
-          have_last ? ((du_t * last_delta) >= 0. ? 1. : -1.) : 1.;
-        const double dt_predicted = sign * ds / du_t.l2_norm();
+          have_last ? (system.path_product(du_t, last_delta) >= 0. ? 1. : -1.)
+                    : 1.;
+        const double dt_predicted =
+          sign * ds / std::sqrt(system.path_product(du_t, du_t));
         const double land_at =
           (t_n < parameters.maximum_load_factor &&
            t_n + dt_predicted >= parameters.maximum_load_factor)

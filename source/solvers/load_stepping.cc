@@ -65,7 +65,7 @@ namespace hyperelastic
     system.load_derivative(r_t);
     r_t *= -1.;
     system.solve_tangent(r_t, du_t);
-    const double length2 = du_t * du_t;
+    const double length2 = system.path_product(du_t, du_t);
     return length2 > 0. ? (du_t * r_t) / length2
                         : std::numeric_limits<double>::quiet_NaN();
   }

@@ -32,7 +32,8 @@ namespace hyperelastic
       "'Easy step iterations') and is halved on failure. The run ends at "
       "'Maximum load factor' (landed on exactly) or after 'Maximum steps'; "
       "the CSV gains a column 'stability'. Quasi-static scenes without "
-      "contact, displacement formulation.");
+      "contact; with the mixed formulation ds measures the displacements "
+      "only.");
     prm.declare_entry("Maximum load factor",
                       "1",
                       Double(),

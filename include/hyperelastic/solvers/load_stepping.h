@@ -50,13 +50,23 @@ namespace hyperelastic
     /// Krylov iterations.
     virtual unsigned int
     solve_tangent(const VectorType &b, VectorType &x) = 0;
+
+    /// The inner product the arc length is measured in: over the
+    /// displacements (a mixed formulation's pressures left out).
+    virtual double
+    path_product(const VectorType &a, const VectorType &b) const
+    {
+      return a * b;
+    }
   };
 
   /// The tangent's stiffness along the path at the system's state: du/dt
   /// from K du_t = -dr/dt into @p du_t (assembling the tangent; @p r_t
   /// holds -dr/dt after), and the Rayleigh quotient du_t . K du_t /
-  /// du_t . du_t = -du_t . dr/dt / |du_t|^2 as the result: positive on a
-  /// stable path, zero at a maximum of the load, negative beyond (Bergan's
+  /// |du_t|^2 = -du_t . dr/dt / |du_t|^2 (|.| by path_product(); with a
+  /// mixed formulation du_t . K du_t is the energy of the pressure-condensed
+  /// tangent, dr/dt being zero on the pressure rows) as the result: positive on
+  /// a stable path, zero at a maximum of the load, negative beyond (Bergan's
   /// current stiffness parameter, unnormalized). Collective.
   double
   stiffness_along_path(ContinuationSystem &system,
