@@ -6,8 +6,10 @@
 // along x, lateral stretches 1, and P11 = mu l (l^2 - 1) = -0.25 t gives
 //   t = 2 l (1 - l^2),
 // whose maximum 4 / (3 sqrt 3) = 0.7698 lies at l = 1 / sqrt 3.
-//   arc_length DIM [DEGREE]  'Load stepping/Method = arc length' for 30
-//       steps, P1 (default) or P2 elements: every
+//   arc_length DIM [DEGREE [pressure]]  'Load stepping/Method = arc length'
+//       for 30 steps, P1 (default) or P2 elements, the end load dead or
+//       ('pressure') a follower pressure 0.25 t (the same load here: the end
+//       face keeps its area and normal): every
 //       converged (l, t) lies on the curve (1e-8 of the peak load), the path
 //       passes the maximum (its largest t within 1e-3 of it) and follows the
 //       softening branch down to l < 0.45 with t decreasing there; the CSV's
@@ -54,7 +56,8 @@ namespace
   std::string
   compressed_bar(const int          dim,
                  const std::string &stepping,
-                 const unsigned int degree = 1)
+                 const unsigned int degree   = 1,
+                 const bool         pressure = false)
   {
     const bool three = dim == 3;
     return subsection("Problem",
@@ -72,10 +75,14 @@ namespace
            subsection("Loading", entry("Number of load steps", "10")) +
            dirichlet(1, 0, "x", "0") + dirichlet(2, 2, "y", "0") +
            (three ? dirichlet(3, 4, "z", "0") : "") +
-           subsection("Traction 1",
-                      entry("Boundary id", "1") +
-                        entry("Traction",
-                              three ? "-0.25*t; 0; 0" : "-0.25*t; 0")) +
+           (pressure
+              ? subsection("Pressure 1",
+                           entry("Boundary id", "1") +
+                             entry("Pressure", "0.25*t"))
+              : subsection("Traction 1",
+                           entry("Boundary id", "1") +
+                             entry("Traction",
+                                   three ? "-0.25*t; 0; 0" : "-0.25*t; 0"))) +
            subsection("Newton",
                       entry("Absolute residual tolerance", "1e-13") +
                         entry("Relative residual tolerance", "1e-12")) +
@@ -86,15 +93,17 @@ namespace
 
   template <int dim>
   void
-  arc_length(Checker &checker, const unsigned int degree)
+  arc_length(Checker &checker, const unsigned int degree, const bool pressure)
   {
-    const std::string tag = std::to_string(dim) + "D StVK bar, P" +
-                            std::to_string(degree) + ", arc length: ";
+    const std::string tag =
+      std::to_string(dim) + "D StVK bar, P" + std::to_string(degree) +
+      (pressure ? ", follower pressure" : "") + ", arc length: ";
     const auto problem =
       run_scene<dim>(compressed_bar(dim,
                                     entry("Method", "arc length") +
                                       entry("Maximum steps", "30"),
-                                    degree));
+                                    degree,
+                                    pressure));
     const auto &steps = problem->summaries();
     double      worst = 0., largest_t = 0., smallest_l = 1.;
     bool        decreasing      = true;
@@ -265,9 +274,10 @@ main(int argc, char **argv)
   const int         status = run_and_report(
     [&]() {
       const unsigned int degree = argc > 3 ? std::atoi(argv[3]) : 1;
+      const bool pressure = argc > 4 && std::string(argv[4]) == "pressure";
       if (which == "arc_length")
-        dim == 2 ? arc_length<2>(checker, degree)
-                         : arc_length<3>(checker, degree);
+        dim == 2 ? arc_length<2>(checker, degree, pressure)
+                         : arc_length<3>(checker, degree, pressure);
       else if (which == "mixed")
         dim == 2 ? mixed<2>(checker) : mixed<3>(checker);
       else if (which == "displacement")
@@ -276,7 +286,8 @@ main(int argc, char **argv)
         dim == 2 ? load_control<2>(checker) : load_control<3>(checker);
       else
         throw InputError(
-          "usage: arc_length arc_length DIM [DEGREE] | displacement DIM | "
+          "usage: arc_length arc_length DIM [DEGREE [pressure]] | "
+                  "displacement DIM | "
                   "mixed DIM | load_control DIM");
     },
     MPI_COMM_WORLD);
