@@ -89,8 +89,8 @@ namespace hyperelastic
   template <int dim>
   bool
   EquilibriumSystem<dim>::assemble_linearization(
-    const bool impose_constraint_increment,
-    const bool positive_semidefinite)
+    const bool              impose_constraint_increment,
+    const TangentProjection projection)
   {
     bool moves_constraints = false;
     if (impose_constraint_increment)
@@ -131,7 +131,7 @@ namespace hyperelastic
                                 *active_constraints,
                                 tangent,
                                 rhs,
-                                positive_semidefinite);
+                                projection);
     return moves_constraints || moves_terms;
   }
 
@@ -415,7 +415,7 @@ namespace hyperelastic
                                 homogeneous_constraints,
                                 tangent,
                                 rhs,
-                                false);
+                                TangentProjection::none);
   }
 
   template <int dim>

@@ -84,11 +84,29 @@ namespace hyperelastic
              size(loading.body_force) + " expressions",
              "needs " + std::to_string(dim) + " expressions separated by ';'");
     for (const auto &c : loading.dirichlet)
-      for (const unsigned int component : c.components)
-        if (component >= dim)
-          reject(c.subsection + "/Components",
-                 "z",
-                 "there is no z component in 2D");
+      {
+        for (const unsigned int component : c.components)
+          if (component >= dim)
+            reject(c.subsection + "/Components",
+                   "z",
+                   "there is no z component in 2D");
+        if (!c.vertex.empty() && c.vertex.size() != dim)
+          reject(c.subsection + "/Vertex",
+                 size(c.vertex) + " coordinates",
+                 "needs " + std::to_string(dim));
+      }
+    for (const auto &p : loading.point_loads)
+      {
+        if (p.point.size() != dim)
+          reject(p.subsection + "/Point",
+                 size(p.point) + " coordinates",
+                 "needs " + std::to_string(dim));
+        if (p.expressions.size() != dim)
+          reject(p.subsection + "/Force",
+                 size(p.expressions) + " expressions",
+                 "needs " + std::to_string(dim) +
+                   " expressions separated by ';'");
+      }
     for (const auto &c : loading.boundary_loads)
       {
         const bool vector_valued = boundary_load_kind(c.kind).vector_valued;
@@ -160,7 +178,10 @@ namespace hyperelastic
             loading.dirichlet[b].boundary_id)
           for (const unsigned int ca : loading.dirichlet[a].components)
             for (const unsigned int cb : loading.dirichlet[b].components)
-              if (ca == cb)
+              if (ca == cb &&
+                  (loading.dirichlet[a].vertex.empty() ||
+                   loading.dirichlet[b].vertex.empty() ||
+                   loading.dirichlet[a].vertex == loading.dirichlet[b].vertex))
                 reject(loading.dirichlet[b].subsection + "/Boundary id",
                        std::to_string(loading.dirichlet[b].boundary_id),
                        "component " + std::string(1, "xyz"[ca]) +

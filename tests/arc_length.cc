@@ -30,9 +30,21 @@
 //   load_control DIM  the same scene under load control to t = 1: the run
 //       stops with "the load passed a maximum at t = T; use Load stepping/
 //       Method = arc length", T within [0.74, 0.7698].
+//   arch SCENE  the example scene SCENE (parameters/snap_through_arch_*.prm:
+//       a clamped shallow arch, point load P t at the crown) by arc length:
+//       the path passes the limit point (t then falls below 0.6 of its
+//       value there, 'stability' negative) and ends on t = 1 on the far
+//       side. The same discrete problem under displacement control (the
+//       crown vertex's u_y prescribed along the arc-length crown
+//       displacements, 'Dirichlet/Vertex', no point load) gives at every
+//       point the same support reaction (1e-6 of the largest) and crown
+//       position, and the same limit load (the vertex of the parabola
+//       through the three points around the first maximum, 1e-4); the
+//       arc-length reactions balance P t (1e-8).
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/loads/boundary_conditions.h>
 
 #include "support/analytic_bar.h"
 #include "support/checker.h"
@@ -40,9 +52,14 @@
 #include "support/scene_text.h"
 #include "support/summary_columns.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -262,6 +279,191 @@ namespace
     checker.at_least(tag + "the maximum's t", t, 0.74);
     checker.at_most(tag + "the maximum's t", t, peak_load);
   }
+
+  /// The text of the scene file @p path, its mesh path made absolute.
+  std::string
+  scene_file_text(const std::string &path)
+  {
+    std::ifstream in(path);
+    AssertThrow(in, ExcMessage("cannot read " + path));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string       scene    = text.str();
+    const std::string relative = "../meshes/";
+    const auto        at       = scene.find(relative);
+    if (at != std::string::npos)
+      scene.replace(at,
+                    relative.size(),
+                    path.substr(0, path.rfind('/') + 1) + relative);
+    return scene;
+  }
+
+  /// An expression of t, linear between t = (k - 1)/n and k/n, that takes
+  /// the value @p w[k - 1] at t = k/n and 0 at t = 0 (n = w.size()).
+  std::string
+  piecewise_linear(const std::vector<double> &w)
+  {
+    const std::size_t  n = w.size();
+    std::ostringstream e;
+    e << std::setprecision(17);
+    for (std::size_t k = 1; k <= n; ++k)
+      {
+        const double before = k == 1 ? 0. : w[k - 2];
+        e << (k == 1 ? "" : " + ") << "(t > " << double(k - 1) / n
+          << ") * (t <= " << double(k) / n << ") * (" << before << " + (" << n
+          << " * t - " << k - 1 << ") * (" << w[k - 1] - before << "))";
+      }
+    return e.str();
+  }
+
+  /// The index of the first local maximum of @p y (the limit point).
+  std::size_t
+  first_maximum(const std::vector<double> &y)
+  {
+    std::size_t i = 0;
+    while (i + 1 < y.size() && y[i + 1] >= y[i])
+      ++i;
+    return i;
+  }
+
+  /// The vertex height of the parabola through the three points around
+  /// the first local maximum of @p y (over @p x).
+  double
+  parabola_peak(const std::vector<double> &x, const std::vector<double> &y)
+  {
+    const std::size_t i = first_maximum(y);
+    if (i == 0 || i + 1 >= y.size())
+      return y[i];
+    const double x0 = x[i - 1], x1 = x[i], x2 = x[i + 1];
+    const double y0 = y[i - 1], y1 = y[i], y2 = y[i + 1];
+    // Divided differences: y = y0 + d1 (x - x0) + d2 (x - x0)(x - x1).
+    const double d1 = (y1 - y0) / (x1 - x0);
+    const double d2 = ((y2 - y1) / (x2 - x1) - d1) / (x2 - x0);
+    if (!(d2 < 0.))
+      return y[i];
+    const double xm = 0.5 * (x0 + x1) - 0.5 * d1 / d2;
+    return y0 + d1 * (xm - x0) + d2 * (xm - x0) * (xm - x1);
+  }
+
+  /// The upward support reaction of the arch's clamped ends (ids 1, 2).
+  template <int dim>
+  double
+  support_reaction(const StepSummary<dim> &s)
+  {
+    return column(s, "reaction_1_y") + column(s, "reaction_2_y");
+  }
+
+  template <int dim>
+  void
+  arch(Checker &checker, const std::string &path)
+  {
+    const std::string tag = std::to_string(dim) + "D arch: ";
+    const std::string scene =
+      scene_file_text(path) +
+      subsection("Output",
+                 entry("Write VTU", "false") +
+                   entry("Base name", "arch_" + std::to_string(dim) + "d"));
+    Parameters parameters;
+    parameters.read_from_string(scene);
+    AssertThrow(!parameters.loading.point_loads.empty() &&
+                  !parameters.output.points.empty(),
+                ExcMessage(path + " needs 'Point load 1' and Output/Points"));
+    std::string crown;
+    for (const double x : parameters.output.points[0])
+      crown += (crown.empty() ? "" : ", ") + std::to_string(x);
+    // The point load's magnitude P: minus its y force at t = 1.
+    const auto force =
+      parse_vector_function<dim>(parameters.loading.point_loads[0].expressions,
+                                 parameters.loading.constants,
+                                 "Point load 1/Force");
+    force->set_time(1.);
+    const double P = -force->value(Point<dim>(), 1);
+
+    const auto          problem = run_scene<dim>(scene);
+    std::vector<double> t, w, reaction;
+    double              balance = 0., most_negative = 0.;
+    for (const auto &s : problem->summaries())
+      {
+        t.push_back(s.load_factor);
+        w.push_back(column(s, "point1_uy"));
+        reaction.push_back(support_reaction(s));
+        balance = std::max(balance, std::abs(reaction.back() - P * t.back()));
+        most_negative = std::min(most_negative, column(s, "stability"));
+      }
+    checker.at_least(tag + "arc-length steps", t.size(), 10);
+    if (t.size() < 10)
+      return;
+    const double scale =
+      std::max(*std::max_element(reaction.begin(), reaction.end()),
+               -*std::min_element(reaction.begin(), reaction.end()));
+    checker.at_most(tag + "largest |support reaction - P t| / largest",
+                    balance / scale,
+                    1e-8);
+    checker.is_true(tag + "ends on t = 1 ('Maximum load factor')",
+                    t.back() == 1.);
+    const std::size_t limit_point = first_maximum(t);
+    checker.below(tag + "t at the first maximum (a limit point)",
+                  t[limit_point],
+                  1.);
+    double fall = t[limit_point];
+    for (std::size_t k = limit_point; k < t.size(); ++k)
+      fall = std::min(fall, t[k]);
+    checker.below(tag + "smallest t after the limit point / limit t",
+                  fall / t[limit_point],
+                  0.6);
+    checker.below(tag + "smallest stability (negative past the limit)",
+                  most_negative,
+                  0.);
+
+    // The same discrete problem under displacement control of the crown.
+    const std::string controlled =
+      scene + subsection("Load stepping", entry("Method", "load control")) +
+      subsection("Loading",
+                 entry("Number of load steps", std::to_string(t.size()))) +
+      subsection("Point load 1", entry("Point", "")) +
+      subsection("Dirichlet 3",
+                 entry("Boundary id", "3") + entry("Components", "y") +
+                   entry("Vertex", crown) +
+                   entry("Displacement", piecewise_linear(w))) +
+      subsection("Output",
+                 entry("Base name",
+                       "arch_controlled_" + std::to_string(dim) + "d"));
+    const auto          controlled_problem = run_scene<dim>(controlled);
+    double              reaction_error = 0., position_error = 0.;
+    unsigned int        matched = 0;
+    std::vector<double> w_controlled, reaction_controlled;
+    for (const auto &s : controlled_problem->summaries())
+      {
+        const double      n = s.load_factor * t.size();
+        const std::size_t k = std::lround(n);
+        if (k == 0 || std::abs(n - k) > 1e-9)
+          continue; // a cut-back's intermediate state
+        ++matched;
+        reaction_error =
+          std::max(reaction_error,
+                   std::abs(support_reaction(s) - reaction[k - 1]));
+        position_error =
+          std::max(position_error, std::abs(column(s, "point1_uy") - w[k - 1]));
+        w_controlled.push_back(column(s, "point1_uy"));
+        reaction_controlled.push_back(support_reaction(s));
+      }
+    checker.at_least(tag + "displacement-controlled points matched",
+                     matched,
+                     t.size());
+    checker.at_most(tag + "largest |reaction (displacement control) - "
+                          "reaction (arc length)| / largest",
+                    reaction_error / scale,
+                    1e-6);
+    checker.at_most(tag + "largest crown position difference / largest",
+                    position_error / -*std::min_element(w.begin(), w.end()),
+                    1e-9);
+    const double limit = parabola_peak(w, reaction);
+    checker.close(tag + "limit load, displacement control vs arc length",
+                  parabola_peak(w_controlled, reaction_controlled),
+                  limit,
+                  limit,
+                  1e-4);
+  }
 } // namespace
 
 int
@@ -284,11 +486,13 @@ main(int argc, char **argv)
         dim == 2 ? displacement<2>(checker) : displacement<3>(checker);
       else if (which == "load_control")
         dim == 2 ? load_control<2>(checker) : load_control<3>(checker);
+      else if (which == "arch")
+        dim == 2 ? arch<2>(checker, argv[3]) : arch<3>(checker, argv[3]);
       else
         throw InputError(
           "usage: arc_length arc_length DIM [DEGREE [pressure]] | "
                   "displacement DIM | "
-                  "mixed DIM | load_control DIM");
+                  "mixed DIM | load_control DIM | arch DIM SCENE");
     },
     MPI_COMM_WORLD);
   return checker.exit_code(status);

@@ -76,7 +76,7 @@ namespace
   /// u_a = g(X_a) at every vertex (P1), with ghost entries.
   template <int dim>
   VectorType
-  nodal_field(const BoxDiscretisation<dim>                           &box,
+  nodal_field(const BoxDiscretisation<dim>                            &box,
               const std::function<Tensor<1, dim>(const Point<dim> &)> &g)
   {
     const VectorType owned = owned_nodal_values(
@@ -135,7 +135,7 @@ namespace
         N[1][2] = -n[0];
         N[2][0] = -n[1];
         N[2][1] = n[0];
-        Q = unit_symmetric_tensor<3>() + s * N + (1. - c) * (N * N);
+        Q       = unit_symmetric_tensor<3>() + s * N + (1. - c) * (N * N);
       }
     return Q;
   }
@@ -152,8 +152,8 @@ namespace
   rigid(Checker &checker)
   {
     const BoxDiscretisation<dim> box(3., 6, 2, 1, MPI_COMM_WORLD);
-    const auto material = create_material<dim>("corotational",
-                                               lame_parameters(1., 1.5));
+    const auto                   material =
+      create_material<dim>("corotational", lame_parameters(1., 1.5));
     const WarpedAssembler<dim> warped(box.dof_handler, box.mapping, *material);
     const Tensor<2, dim>       Q = rotation<dim>(1.1);
     Tensor<1, dim>             c;
@@ -203,8 +203,10 @@ namespace
     const LameParameters         lame = lame_parameters(1., 1.5);
     const auto material = create_material<dim>("corotational", lame);
     const auto linear   = create_material<dim>("linear elastic", lame);
-    const WarpedAssembler<dim> warped(box.dof_handler, box.mapping, *material);
-    const GenericAssembler<dim> reference(box.dof_handler, box.mapping, *linear);
+    const WarpedAssembler<dim>  warped(box.dof_handler, box.mapping, *material);
+    const GenericAssembler<dim> reference(box.dof_handler,
+                                          box.mapping,
+                                          *linear);
     const std::string           tag = std::to_string(dim) + "D: ";
 
     std::vector<double> relative;
@@ -212,12 +214,12 @@ namespace
       {
         const VectorType u = nodal_field<dim>(box, [&](const Point<dim> &X) {
           Tensor<1, dim> w;
-          w[0]       = std::sin(X[0]) + 0.5 * X[1];
-          w[1]       = std::cos(X[0] * X[1]);
+          w[0] = std::sin(X[0]) + 0.5 * X[1];
+          w[1] = std::cos(X[0] * X[1]);
           w[dim - 1] += 0.3 * X[0] * X[0];
           return Tensor<1, dim>(eps * w);
         });
-        VectorType f(box.owned, box.comm), Ku(box.owned, box.comm);
+        VectorType       f(box.owned, box.comm), Ku(box.owned, box.comm);
         warped.internal_forces(u, f);
         reference.internal_forces(u, Ku);
         relative.push_back(difference_norm(f, Ku) / Ku.l2_norm());
@@ -234,12 +236,12 @@ namespace
     MatrixType K_warped, K_linear;
     box.reinit_matrix(K_warped);
     box.reinit_matrix(K_linear);
-    VectorType rest(box.owned, box.relevant, box.comm);
-    VectorType rhs(box.owned, box.comm);
+    VectorType                rest(box.owned, box.relevant, box.comm);
+    VectorType                rhs(box.owned, box.comm);
     AffineConstraints<double> none;
     none.close();
-    warped.system(rest, none, false, K_warped, rhs);
-    reference.system(rest, none, false, K_linear, rhs);
+    warped.system(rest, none, TangentProjection::none, K_warped, rhs);
+    reference.system(rest, none, TangentProjection::none, K_linear, rhs);
     VectorType v(box.owned, box.comm), a(box.owned, box.comm),
       b(box.owned, box.comm);
     fill_random(v, 1., 7);
@@ -259,12 +261,13 @@ namespace
           s[1] = 0.5 * amplitude * X[0] * X[0];
           return s;
         });
-        warped.system(u, none, false, K_warped, rhs);
+        warped.system(u, none, TangentProjection::none, K_warped, rhs);
         K_warped.vmult(a, v);
         // Central difference of the forces along v.
         const double step = 1e-6;
         VectorType   plus(box.owned, box.relevant, box.comm),
-          minus(box.owned, box.relevant, box.comm), shifted(box.owned, box.comm);
+          minus(box.owned, box.relevant, box.comm),
+          shifted(box.owned, box.comm);
         shifted = u;
         shifted.add(step, v);
         plus = shifted;
@@ -297,20 +300,25 @@ namespace
   void
   cantilever(Checker &checker)
   {
-    const bool        three = dim == 3;
-    const auto        scene = [&](const std::string &model,
+    const bool three = dim == 3;
+    const auto scene = [&](const std::string &model,
                            const std::string &linearize) {
       return subsection("Problem", entry("Dimension", std::to_string(dim))) +
              subsection("Mesh",
                         entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                          entry("Upper corner", three ? "4, 0.5, 0.5" : "4, 0.5") +
+                          entry("Upper corner",
+                                three ? "4, 0.5, 0.5" : "4, 0.5") +
                           entry("Subdivisions", three ? "8, 1, 1" : "16, 2")) +
              subsection("Material",
                         entry("Model", model) + entry("Young's modulus", "1") +
                           entry("Poisson's ratio", "0.3")) +
              subsection("Loading",
-                        entry("Body force", three ? "0; 0; -0.002" : "0; -0.002")) +
-             dirichlet(1, 0, three ? "x, y, z" : "x, y", three ? "0; 0; 0" : "0; 0") +
+                        entry("Body force",
+                              three ? "0; 0; -0.002" : "0; -0.002")) +
+             dirichlet(1,
+                       0,
+                       three ? "x, y, z" : "x, y",
+                       three ? "0; 0; 0" : "0; 0") +
              tight_solver("direct") +
              quiet_output(three ? "4, 0.25, 0.25" : "4, 0.25") +
              subsection("Time integration",
@@ -330,9 +338,9 @@ namespace
     const auto tip = [](const StepSummary<dim> &s) {
       return s.point_displacements[0][dim - 1];
     };
-    double amplitude = 0., band = 0., once_band = 0.;
+    double       amplitude = 0., band = 0., once_band = 0.;
     unsigned int most = 0;
-    const auto &c = corotational->summaries(), &w = warped->summaries(),
+    const auto  &c = corotational->summaries(), &w = warped->summaries(),
                &o = once->summaries();
     for (unsigned int k = 0; k < c.size(); ++k)
       {
@@ -341,8 +349,13 @@ namespace
         once_band = std::max(once_band, std::abs(tip(o[k]) - tip(w[k])));
         most      = std::max(most, o[k].newton_iterations);
       }
-    const std::string tag = std::to_string(dim) + "D swinging cantilever, t <= 60: ";
-    checker.is_true(tag + "30 steps of each run (" + std::to_string(c.size()) + ", " + std::to_string(w.size()) + ", " + std::to_string(o.size()) + ")", c.size() == w.size() && w.size() == o.size() && c.size() == 30);
+    const std::string tag =
+      std::to_string(dim) + "D swinging cantilever, t <= 60: ";
+    checker.is_true(tag + "30 steps of each run (" + std::to_string(c.size()) +
+                      ", " + std::to_string(w.size()) + ", " +
+                      std::to_string(o.size()) + ")",
+                    c.size() == w.size() && w.size() == o.size() &&
+                      c.size() == 30);
     checker.at_most(tag + "max |tip_warping - tip_corotational| / max |tip|",
                     band / amplitude,
                     5e-2);
@@ -369,8 +382,8 @@ namespace
   void
   momentum(Checker &checker)
   {
-    const bool        three = dim == 3;
-    const auto        scene = [&](const std::string &velocity) {
+    const bool three = dim == 3;
+    const auto scene = [&](const std::string &velocity) {
       return subsection("Problem", entry("Dimension", std::to_string(dim))) +
              subsection("Mesh",
                         entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
@@ -386,20 +399,22 @@ namespace
                           entry("End time", "2") +
                           entry("Initial velocity", velocity));
     };
-    const std::string tag = std::to_string(dim) + "D stiffness warping, free body: ";
-    const std::string v0  = three ? "0.1; -0.2; 0.3" : "0.1; -0.2";
-    auto translating = run_scene<dim>(scene(v0));
-    Tensor<1, dim> v;
+    const std::string tag =
+      std::to_string(dim) + "D stiffness warping, free body: ";
+    const std::string v0          = three ? "0.1; -0.2; 0.3" : "0.1; -0.2";
+    auto              translating = run_scene<dim>(scene(v0));
+    Tensor<1, dim>    v;
     v[0] = 0.1;
     v[1] = -0.2;
     if constexpr (dim == 3)
       v[2] = 0.3;
-    double drift = 0.;
-    const auto p0 = translating->summaries().front().linear_momentum;
+    double     drift = 0.;
+    const auto p0    = translating->summaries().front().linear_momentum;
     for (const auto &s : translating->summaries())
       drift = std::max(drift, (s.linear_momentum - p0).norm());
     checker.at_most(tag + "translating: momentum drift / |p|",
-                    drift / p0.norm(), 1e-12);
+                    drift / p0.norm(),
+                    1e-12);
     checker.at_most(tag + "translating: max |u - v t| / |v t| at t = 2",
                     max_nodal_error(translating->get_dof_handler(),
                                     translating->solution(),
@@ -411,9 +426,9 @@ namespace
 
     auto spinning = run_scene<dim>(scene(
       three ? "0.1 - 0.3*(y - 0.5) + 0.1*(z - 0.5)*y; 0.3*(x - 0.5) - 0.05; "
-              "0.02 - 0.1*(x - 0.5)*x" :
-              "0.1 - 0.3*(y - 0.5) + 0.05*y*y; 0.3*(x - 0.5) - 0.05"));
-    drift = 0.;
+              "0.02 - 0.1*(x - 0.5)*x"
+            : "0.1 - 0.3*(y - 0.5) + 0.05*y*y; 0.3*(x - 0.5) - 0.05"));
+    drift         = 0.;
     const auto q0 = spinning->summaries().front().linear_momentum;
     for (const auto &s : spinning->summaries())
       drift = std::max(drift, (s.linear_momentum - q0).norm());
@@ -443,9 +458,5 @@ namespace
 int
 main(int argc, char **argv)
 {
-  return run_case_for_dimension(argc,
-                                argv,
-                                "rigid",
-                                run_case<2>,
-                                run_case<3>);
+  return run_case_for_dimension(argc, argv, "rigid", run_case<2>, run_case<3>);
 }

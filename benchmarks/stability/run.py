@@ -3,10 +3,11 @@
 the extreme crush, and load control against arc length at limit points.
 
   crush      the cube of stress test 25 (6 x 6 x 6 boxes, E = 1, nu = 0.4,
-             stable neo-Hookean, clamped top and bottom, the top pushed down
-             to 10 % of the height in one nominal load step), for each
+             clamped top and bottom, the top pushed down to 10 % of the
+             height in one nominal load step), stable neo-Hookean for each
              'Newton/Tangent' (exact; projected; exact, projected on
-             failure) with 'Newton/Max iterations' 20 (the default) and 100:
+             failure; automatic) with 'Newton/Max iterations' 20 (the
+             default), 50 and 100, and corotational with 20:
              whether it completes, load steps, Newton iterations (total and
              largest per step), cut-backs, the last converged t, wall time;
   crush path the same crush by arc length ('Number of load steps' 20, 80
@@ -16,8 +17,12 @@ the extreme crush, and load control against arc length at limit points.
              under load control (to its stop at the maximum) and by arc
              length (24 steps): steps, Newton iterations, the largest t,
              wall time.
+  arch       parameters/snap_through_arch_2d.prm and _3d.prm under load
+             control (10 load steps) and by arc length: the same columns,
+             the load factor at the first maximum, the crown's largest
+             downward displacement.
 
-Writes crush.csv, crush_path.csv, bar.csv and stability.png here.
+Writes crush.csv, crush_path.csv, bar.csv, arch.csv and stability.png here.
 
   /usr/bin/python3 benchmarks/stability/run.py          # everything (~3 min)
   /usr/bin/python3 benchmarks/stability/run.py --plot   # redraw from the CSVs
@@ -95,16 +100,24 @@ def run(name, text):
 
 def crush():
     table = []
-    for tangent in ("exact", "projected", "exact, projected on failure"):
-        for iterations in (20, 100):
-            name = "crush_%s_%d" % (tangent.split(",")[0], iterations)
+    cases = [("stable neo-Hookean", tangent, iterations)
+             for tangent in ("exact", "projected",
+                             "exact, projected on failure", "automatic")
+             for iterations in (20, 50, 100)]
+    cases += [("corotational", tangent, 20)
+              for tangent in ("exact, projected on failure", "automatic")]
+    for model, tangent, iterations in cases:
+            name = "crush_%s_%s_%d" % (model.split()[0],
+                                       tangent.split(",")[0], iterations)
             if "failure" in tangent:
-                name = "crush_fallback_%d" % iterations
+                name = "crush_%s_fallback_%d" % (model.split()[0], iterations)
             code, wall, rows = run(name, CRUSH.format(
                 steps=1, method="load control", tangent=tangent,
-                iterations=iterations, out=OUT, name=name))
+                iterations=iterations, out=OUT,
+                name=name).replace("stable neo-Hookean", model))
             its = [int(r["newton_iterations"]) for r in rows]
             table.append({
+                "model": model,
                 "tangent": tangent, "max_iterations": iterations,
                 "completed": int(code == 0), "load_steps": len(rows),
                 "newton_iterations": sum(its),
@@ -149,6 +162,47 @@ def bar():
     write(os.path.join(HERE, "bar.csv"), table)
 
 
+def arch():
+    table = []
+    for dim in (2, 3):
+        scene = os.path.join(ROOT, "parameters", "snap_through_arch_%dd.prm" % dim)
+        with open(scene) as f:
+            base = f.read().replace("set Directory = output",
+                                    "set Directory = " + OUT)
+        base = base.replace("../meshes/", os.path.join(ROOT, "meshes") + "/")
+        for method in ("load control", "arc length"):
+            name = "arch_%dd_%s" % (dim, method.replace(" ", "_"))
+            text = base.replace("set Method        = arc length",
+                                "set Method = " + method)
+            text = text.replace("set Base name = snap_through_arch_%dd" % dim,
+                                "set Base name = " + name)
+            if method == "load control":
+                text = text.replace("set Number of load steps = 2",
+                                    "set Number of load steps = 10")
+            code, wall, rows = run(name, text)
+            t = [float(r["load_factor"]) for r in rows]
+            first = 0
+            while first + 1 < len(t) and t[first + 1] >= t[first]:
+                first += 1
+            table.append({
+                "dim": dim, "method": method, "completed": int(code == 0),
+                "steps": len(rows),
+                "newton_iterations":
+                    sum(int(r["newton_iterations"]) for r in rows),
+                "first_maximum_t": t[first] if t else 0.,
+                "last_t": t[-1] if t else 0.,
+                "crown_uy_lowest":
+                    min(float(r["point1_uy"]) for r in rows) if rows else 0.,
+                "wall_s": round(wall, 2)})
+            print(table[-1])
+            if dim == 2 and method == "arc length":
+                write(os.path.join(HERE, "arch_path.csv"),
+                      [{"step": r["step"], "t": r["load_factor"],
+                        "crown_uy": r["point1_uy"],
+                        "stability": r["stability"]} for r in rows])
+    write(os.path.join(HERE, "arch.csv"), table)
+
+
 def write(path, rows):
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
@@ -163,7 +217,7 @@ def plot():
     with open(os.path.join(HERE, "crush_path.csv")) as f:
         path = list(csv.DictReader(f))
     steps = [int(r["step"]) for r in path]
-    fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4))
+    fig, (a, b, c) = plt.subplots(1, 3, figsize=(16, 4))
     a.plot(steps, [float(r["t"]) for r in path], "o-", ms=3)
     a.axhline(1., color="grey", lw=0.5)
     a.set_xlabel("arc-length step")
@@ -174,6 +228,13 @@ def plot():
     b.set_xlabel("arc-length step")
     b.set_ylabel("stability (stiffness along the path / unloaded)")
     b.set_title("stability: zero at each fold")
+    with open(os.path.join(HERE, "arch_path.csv")) as f:
+        arch_path = list(csv.DictReader(f))
+    c.plot([-float(r["crown_uy"]) for r in arch_path],
+           [float(r["t"]) for r in arch_path], "o-", ms=3)
+    c.set_xlabel("crown deflection (downwards)")
+    c.set_ylabel("load factor t (crown load 0.03 t)")
+    c.set_title("2D arch by arc length: snap-through")
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, "stability.png"), dpi=110)
 
@@ -185,4 +246,5 @@ if __name__ == "__main__":
     if not args.plot:
         crush()
         bar()
+        arch()
     plot()

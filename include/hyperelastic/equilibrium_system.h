@@ -104,8 +104,8 @@ namespace hyperelastic
 
     // NonlinearSystem
     bool
-    assemble_linearization(bool impose_constraint_increment,
-                           bool positive_semidefinite) override;
+    assemble_linearization(bool              impose_constraint_increment,
+                           TangentProjection projection) override;
     unsigned int
     solve_linearization(double forcing) override;
     bool

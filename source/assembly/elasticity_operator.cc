@@ -107,7 +107,7 @@ namespace hyperelastic
     const AffineConstraints<double> &constraints,
     MatrixType                      &matrix,
     VectorType                      &rhs,
-    const bool                       project_tangent) const
+    const TangentProjection          project_tangent) const
   {
     // The kernel declines (on all ranks) constraints other than Dirichlet
     // and matrices without its node-block sparsity.
@@ -127,7 +127,8 @@ namespace hyperelastic
     for (const auto &term : terms)
       if (term->depends_on_solution())
         {
-          term->request_positive_semidefinite(project_tangent);
+          term->request_positive_semidefinite(project_tangent ==
+                                              TangentProjection::every_point);
           term->add_load_stiffness(u, t, constraints, matrix, rhs);
         }
     matrix.compress(VectorOperation::add);

@@ -115,9 +115,9 @@ namespace hyperelastic
   bool
   GenericAssembler<dim>::system(const VectorType                &u,
                                 const AffineConstraints<double> &constraints,
-                                const bool  project_tangent,
-                                MatrixType &matrix,
-                                VectorType &rhs) const
+                                const TangentProjection project_tangent,
+                                MatrixType             &matrix,
+                                VectorType             &rhs) const
   {
     matrix                        = 0.;
     rhs                           = 0.;

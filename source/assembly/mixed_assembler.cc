@@ -142,9 +142,10 @@ namespace hyperelastic
 
   template <int dim>
   void
-  MixedAssembler<dim>::evaluate_cell(CellData        &data,
-                                     const CellOutput output,
-                                     const bool       project_tangent) const
+  MixedAssembler<dim>::evaluate_cell(
+    CellData               &data,
+    const CellOutput        output,
+    const TangentProjection project_tangent) const
   {
     const bool with_matrix = output != CellOutput::residual;
     // The bubble's block: its rows and columns only, no energy.
@@ -284,8 +285,9 @@ namespace hyperelastic
 
   template <int dim>
   typename MixedAssembler<dim>::BubbleOutcome
-  MixedAssembler<dim>::iterate_bubble(CellData  &data,
-                                      const bool project_tangent) const
+  MixedAssembler<dim>::iterate_bubble(
+    CellData               &data,
+    const TangentProjection project_tangent) const
   {
     const unsigned int n = data.n, nb = data.n_bubble;
     FullMatrix<double> K_bb(nb, nb), K_bb_inverse(nb, nb);
@@ -321,9 +323,10 @@ namespace hyperelastic
 
   template <int dim>
   void
-  MixedAssembler<dim>::solve_bubble(CellData  &data,
-                                    const bool with_matrix,
-                                    const bool project_tangent) const
+  MixedAssembler<dim>::solve_bubble(
+    CellData               &data,
+    const bool              with_matrix,
+    const TangentProjection project_tangent) const
   {
     const unsigned int n = data.n, nb = data.n_bubble;
     const std::size_t  n_cached =
@@ -390,10 +393,10 @@ namespace hyperelastic
   template <int dim>
   template <typename Worker>
   void
-  MixedAssembler<dim>::for_each_cell(const VectorType &u,
-                                     const bool        with_matrix,
-                                     const bool        project_tangent,
-                                     Worker          &&worker) const
+  MixedAssembler<dim>::for_each_cell(const VectorType       &u,
+                                     const bool              with_matrix,
+                                     const TangentProjection project_tangent,
+                                     Worker                &&worker) const
   {
     const unsigned int n_bubble = element == MixedElement::mini ? dim : 0;
     CellData data(mapping, dof_handler.get_fe(), quadrature, n_bubble);
@@ -420,7 +423,7 @@ namespace hyperelastic
     const double   modulus = material.small_strain_moduli().mu;
     double         squared = 0.;
     Vector<double> cell_residual(dof_handler.get_fe().dofs_per_cell);
-    for_each_cell(u, false, false, [&](CellData &data) {
+    for_each_cell(u, false, TangentProjection::none, [&](CellData &data) {
       for (unsigned int i = 0; i < data.n; ++i)
         cell_residual[i] = data.residual[i];
       internal.add(data.dofs, cell_residual);
@@ -442,7 +445,7 @@ namespace hyperelastic
   bool
   MixedAssembler<dim>::system(const VectorType                &u,
                               const AffineConstraints<double> &constraints,
-                              const bool                       project_tangent,
+                              const TangentProjection          project_tangent,
                               MatrixType                      &matrix,
                               VectorType                      &rhs) const
   {
@@ -475,7 +478,7 @@ namespace hyperelastic
   {
     double energy = 0., magnitude = 0.;
     double min_J = std::numeric_limits<double>::infinity();
-    for_each_cell(u, false, false, [&](CellData &data) {
+    for_each_cell(u, false, TangentProjection::none, [&](CellData &data) {
       min_J = std::min(min_J, data.min_J);
       energy += data.energy;
       magnitude += std::abs(data.energy);

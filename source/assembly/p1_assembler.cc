@@ -287,7 +287,7 @@ namespace hyperelastic
   bool
   P1Assembler<dim>::system(const VectorType                &u,
                            const AffineConstraints<double> &constraints,
-                           const bool                       project_tangent,
+                           const TangentProjection          project_tangent,
                            MatrixType                      &matrix,
                            VectorType                      &rhs) const
   {

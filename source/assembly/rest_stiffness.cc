@@ -17,9 +17,10 @@ namespace hyperelastic
                           const LameParameters  &moduli,
                           MatrixType            &stiffness)
   {
-    const MPI_Comm comm     = dof_handler.get_communicator();
-    const IndexSet owned    = dof_handler.locally_owned_dofs();
-    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+    const MPI_Comm comm  = dof_handler.get_communicator();
+    const IndexSet owned = dof_handler.locally_owned_dofs();
+    const IndexSet relevant =
+      DoFTools::extract_locally_relevant_dofs(dof_handler);
     DynamicSparsityPattern dsp(relevant);
     DoFTools::make_sparsity_pattern(dof_handler, dsp);
     SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
@@ -30,7 +31,7 @@ namespace hyperelastic
     AffineConstraints<double> none;
     none.close();
     GenericAssembler<dim>(dof_handler, mapping, *linear)
-      .system(rest, none, false, stiffness, rhs);
+      .system(rest, none, TangentProjection::none, stiffness, rhs);
   }
 
   template void

@@ -29,8 +29,9 @@ namespace hyperelastic
 
     // The vertices of the owned and ghost cells, and which vertex and
     // component every dof there belongs to.
-    std::unordered_map<types::global_dof_index, std::pair<unsigned int, unsigned int>>
-                                         dof_to_vertex;
+    std::unordered_map<types::global_dof_index,
+                       std::pair<unsigned int, unsigned int>>
+      dof_to_vertex;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
         for (const unsigned int v : cell->vertex_indices())
@@ -107,8 +108,8 @@ namespace hyperelastic
     dx.resize(rows.start[r + 1] - rows.start[r]);
     for (unsigned int k = rows.start[r]; k < rows.start[r + 1]; ++k)
       {
-        const Vertex  &vj = vertices[rows.neighbour[k]];
-        Tensor<1, dim> d  = vj.X - vi.X;
+        const Vertex        &vj = vertices[rows.neighbour[k]];
+        Tensor<1, dim>       d  = vj.X - vi.X;
         const Tensor<1, dim> dX = d;
         for (unsigned int c = 0; c < dim; ++c)
           d[c] += u(vj.dofs[c]) - ui[c];
@@ -123,9 +124,9 @@ namespace hyperelastic
   template <int dim>
   Tensor<1, dim>
   WarpedAssembler<dim>::force(const unsigned int                 r,
-                              const Tensor<2, dim>               &R,
+                              const Tensor<2, dim>              &R,
                               const std::vector<Tensor<1, dim>> &dx,
-                              double                             &magnitude) const
+                              double &magnitude) const
   {
     const Vertex  &vi = vertices[rows.owned_vertices[r]];
     Tensor<1, dim> f;
@@ -157,15 +158,15 @@ namespace hyperelastic
       }
     internal.compress(VectorOperation::insert);
     return std::numeric_limits<double>::epsilon() *
-           std::sqrt(
-             Utilities::MPI::sum(force_squared, dof_handler.get_communicator()));
+           std::sqrt(Utilities::MPI::sum(force_squared,
+                                         dof_handler.get_communicator()));
   }
 
   template <int dim>
   bool
   WarpedAssembler<dim>::system(const VectorType                &u,
                                const AffineConstraints<double> &constraints,
-                               const bool /*project_tangent*/,
+                               TangentProjection /*project_tangent*/,
                                MatrixType &matrix,
                                VectorType &rhs) const
   {

@@ -7,8 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-
-#include <cmath>
+#include <sstream>
 
 namespace hyperelastic
 {
@@ -22,8 +21,8 @@ namespace hyperelastic
 
   double
   get_finite(dealii::ParameterHandler &prm,
-             const std::string &section,
-             const std::string &name)
+             const std::string        &section,
+             const std::string        &name)
   {
     const double v = prm.get_double(name);
     if (!std::isfinite(v))
@@ -41,7 +40,8 @@ namespace hyperelastic
       return std::numeric_limits<double>::infinity();
     char        *end   = nullptr;
     const double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
+    if (text.empty() || end != text.c_str() + text.size() ||
+        !std::isfinite(value))
       reject(section + "/" + name,
              text,
              "must be a positive number, or 'inf' (exactly incompressible, "
@@ -60,6 +60,24 @@ namespace hyperelastic
     if (dealii::Utilities::trim(text).empty())
       return {};
     return dealii::Utilities::split_string_list(text, ';');
+  }
+
+  std::vector<double>
+  parse_coordinates(const std::string &text)
+  {
+    std::vector<double> coordinates;
+    for (const auto &c : dealii::Utilities::split_string_list(text, ','))
+      {
+        std::istringstream in(c);
+        double             x = 0.;
+        in >> x;
+        if (in.fail() || !std::isfinite(x) || !(in >> std::ws).eof())
+          return {};
+        coordinates.push_back(x);
+      }
+    if (coordinates.size() < 2 || coordinates.size() > 3)
+      return {};
+    return coordinates;
   }
 
   unsigned int

@@ -90,6 +90,12 @@ namespace hyperelastic
           list_ids(mesh_ids));
     };
 
+    const auto point_of = [](const std::vector<double> &x) {
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = x[d];
+      return p;
+    };
     for (const auto &c : loading.dirichlet)
       {
         check_id(c.boundary_id, c.subsection);
@@ -106,8 +112,18 @@ namespace hyperelastic
            parse_vector_function<dim>(expressions,
                                       loading.constants,
                                       c.subsection + "/Displacement"),
-           c.subsection});
+           c.subsection,
+           std::nullopt});
+        if (!c.vertex.empty())
+          dirichlet.back().vertex = point_of(c.vertex);
       }
+    for (const auto &c : loading.point_loads)
+      point_loads.push_back(
+        {point_of(c.point),
+         parse_vector_function<dim>(c.expressions,
+                                    loading.constants,
+                                    c.subsection + "/Force"),
+         c.subsection});
     for (const auto &c : loading.boundary_loads)
       {
         check_id(c.boundary_id, c.subsection);
@@ -159,6 +175,37 @@ namespace hyperelastic
     };
   } // namespace
 
+  namespace
+  {
+    /// The prescribed values of the dofs of the one boundary vertex of a
+    /// 'Vertex' condition at load factor @p t; @p missing becomes 0 if this
+    /// rank has the vertex.
+    template <int dim>
+    void
+    vertex_values(const DoFHandler<dim>                     &dof_handler,
+                  const DirichletBoundary<dim>              &d,
+                  std::map<types::global_dof_index, double> &values,
+                  int                                       &missing)
+    {
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial() && cell->at_boundary())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == d.id)
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                if (is_vertex_at(cell->face(f)->vertex(v),
+                                 *d.vertex,
+                                 cell->diameter()))
+                  {
+                    missing = 0;
+                    for (unsigned int c = 0; c < dim; ++c)
+                      if (d.mask[c])
+                        values[cell->face(f)->vertex_dof_index(v, c)] =
+                          d.displacement->value(*d.vertex, c);
+                  }
+    }
+  } // namespace
+
   template <int dim>
   void
   BoundaryConditions<dim>::make_constraints(
@@ -173,6 +220,8 @@ namespace hyperelastic
     constraints.clear();
     constraints.reinit(relevant_dofs);
     std::vector<int> non_finite(dirichlet.size(), 0);
+    // 1 until a rank finds the vertex of a 'Vertex' condition.
+    std::vector<int> missing_vertex(dirichlet.size(), 1);
     for (unsigned int k = 0; k < dirichlet.size(); ++k)
       {
         const auto                               &d = dirichlet[k];
@@ -184,14 +233,16 @@ namespace hyperelastic
         std::vector<bool>         mask(n_components, false);
         for (unsigned int c = 0; c < dim; ++c)
           mask[c] = d.mask[c];
-        VectorTools::interpolate_boundary_values(
-          mapping,
-          dof_handler,
-          std::map<types::boundary_id, const Function<dim> *>{
-            {d.id,
-             n_components == dim ? d.displacement.get() : &padded}},
-          values,
-          ComponentMask(mask));
+        if (d.vertex)
+          vertex_values(dof_handler, d, values, missing_vertex[k]);
+        else
+          VectorTools::interpolate_boundary_values(
+            mapping,
+            dof_handler,
+            std::map<types::boundary_id, const Function<dim> *>{
+              {d.id, n_components == dim ? d.displacement.get() : &padded}},
+            values,
+            ComponentMask(mask));
         for (const auto &[dof, value] : values)
           if (!homogeneous && !std::isfinite(value))
             non_finite[k] = 1;
@@ -210,6 +261,18 @@ namespace hyperelastic
     // Evaluated on each rank's own boundary: agree before anyone throws.
     for (int &flag : non_finite)
       flag = Utilities::MPI::max(flag, dof_handler.get_communicator());
+    for (unsigned int k = 0; k < dirichlet.size(); ++k)
+      if (dirichlet[k].vertex &&
+          Utilities::MPI::min(missing_vertex[k],
+                              dof_handler.get_communicator()) != 0)
+        {
+          std::ostringstream point;
+          point << *dirichlet[k].vertex;
+          throw InputError(
+            "scene entry '" + dirichlet[k].subsection + "/Vertex' = '" +
+            point.str() + "': no vertex of boundary id " +
+            std::to_string(dirichlet[k].id) + " lies at this point");
+        }
     for (unsigned int k = 0; k < dirichlet.size(); ++k)
       if (non_finite[k] != 0)
         throw InputError("scene entry '" + dirichlet[k].subsection +

@@ -5,16 +5,17 @@
 #include <hyperelastic/loads/dead_loads.h>
 #include <hyperelastic/loads/follower_pressure.h>
 #include <hyperelastic/loads/load_terms.h>
+#include <hyperelastic/loads/point_loads.h>
 
 namespace hyperelastic
 {
   namespace
   {
     template <int dim>
-    using BoundaryTermFactory = std::unique_ptr<LoadTerm<dim>> (*)(
-      const BoundaryLoad<dim> &,
-      const dealii::DoFHandler<dim> &,
-      const dealii::Mapping<dim> &);
+    using BoundaryTermFactory =
+      std::unique_ptr<LoadTerm<dim>> (*)(const BoundaryLoad<dim> &,
+                                         const dealii::DoFHandler<dim> &,
+                                         const dealii::Mapping<dim> &);
 
     template <int dim, typename Term>
     std::unique_ptr<LoadTerm<dim>>
@@ -85,6 +86,9 @@ namespace hyperelastic
       for (const auto &entry : registered)
         if (entry.kind.name == load.kind)
           terms.push_back(entry.create(load, dof_handler, mapping));
+    if (!bc.point_loads.empty())
+      terms.push_back(
+        std::make_unique<PointLoads<dim>>(bc.point_loads, dof_handler));
     return terms;
   }
 

@@ -59,6 +59,33 @@ namespace hyperelastic
                           "One expression of x, y, (z,) t per listed "
                           "component, separated by ';': the displacement of "
                           "the reference point (x, y, z) at load factor t.");
+        prm.declare_entry("Vertex",
+                          "",
+                          Anything(),
+                          "Reference coordinates 'x, y[, z]' of one mesh "
+                          "vertex of this boundary: only that vertex is "
+                          "constrained (displacement control of a point, "
+                          "the counterpart of a 'Point load'). Empty: every "
+                          "vertex of the boundary.");
+        prm.leave_subsection();
+      }
+    for (unsigned int i = 1; i <= max_point_loads; ++i)
+      {
+        prm.enter_subsection("Point load " + std::to_string(i));
+        prm.declare_entry("Point",
+                          "",
+                          Anything(),
+                          "Reference coordinates 'x, y[, z]' of the mesh "
+                          "vertex that carries the force (a point that is "
+                          "no vertex is an input error). Empty: this slot is "
+                          "unused.");
+        prm.declare_entry("Force",
+                          "0; 0; 0",
+                          Anything(),
+                          "The nodal force: dim expressions of t (and x, y, "
+                          "z, evaluated at the point) separated by ';'. A "
+                          "dead load: its direction does not follow the "
+                          "body.");
         prm.leave_subsection();
       }
     for (const BoundaryLoadKind &kind : boundary_load_kinds())
@@ -152,6 +179,15 @@ namespace hyperelastic
                      "needs one expression per listed component (" +
                        std::to_string(c.components.size()) +
                        "), separated by ';'");
+            const std::string vertex = prm.get("Vertex");
+            if (!dealii::Utilities::trim(vertex).empty())
+              {
+                c.vertex = parse_coordinates(vertex);
+                if (c.vertex.empty())
+                  reject(section + "/Vertex",
+                         vertex,
+                         "expected the coordinates 'x, y[, z]' of a vertex");
+              }
             dirichlet.push_back(c);
           }
         prm.leave_subsection();
@@ -170,5 +206,24 @@ namespace hyperelastic
                section});
           prm.leave_subsection();
         }
+    for (unsigned int i = 1; i <= max_point_loads; ++i)
+      {
+        const std::string section = "Point load " + std::to_string(i);
+        prm.enter_subsection(section);
+        const std::string point = prm.get("Point");
+        if (!dealii::Utilities::trim(point).empty())
+          {
+            PointLoadSection load;
+            load.point = parse_coordinates(point);
+            if (load.point.empty())
+              reject(section + "/Point",
+                     point,
+                     "expected the coordinates 'x, y[, z]' of a vertex");
+            load.expressions = split_expressions(prm.get("Force"));
+            load.subsection  = section;
+            point_loads.push_back(load);
+          }
+        prm.leave_subsection();
+      }
   }
 } // namespace hyperelastic

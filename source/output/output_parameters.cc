@@ -67,17 +67,8 @@ namespace hyperelastic
     points.clear();
     for (const auto &point : split_expressions(points_text))
       {
-        std::vector<double> coordinates;
-        bool                ok = true;
-        for (const auto &c : dealii::Utilities::split_string_list(point, ','))
-          {
-            std::istringstream in(c);
-            double             x = 0.;
-            in >> x;
-            ok = ok && !in.fail() && std::isfinite(x) && (in >> std::ws).eof();
-            coordinates.push_back(x);
-          }
-        if (!ok || coordinates.size() < 2 || coordinates.size() > 3)
+        const std::vector<double> coordinates = parse_coordinates(point);
+        if (coordinates.empty())
           reject("Output/Points",
                  points_text,
                  "expected points 'x, y[, z]' separated by ';', got '" + point +

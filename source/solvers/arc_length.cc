@@ -145,6 +145,9 @@ namespace hyperelastic
         "the start): nothing to follow");
     double   ds = first_ds;
     LoadStep step;
+    // Set when a step passed the maximum load factor upwards although its
+    // predictor did not (a stiffening path): it is solved again, landing.
+    bool land = false;
     while (step.step < parameters.maximum_steps)
       {
         // Land on the maximum load factor rather than pass it upwards.
@@ -155,7 +158,7 @@ namespace hyperelastic
           sign * ds / std::sqrt(system.path_product(du_t, du_t));
         const double land_at =
           (t_n < parameters.maximum_load_factor &&
-           t_n + dt_predicted >= parameters.maximum_load_factor)
+           (land || t_n + dt_predicted >= parameters.maximum_load_factor))
             ? parameters.maximum_load_factor
             : std::numeric_limits<double>::quiet_NaN();
         pcout << "\nArc-length step " << step.step + 1 << ": from t = " << t_n
@@ -197,6 +200,17 @@ namespace hyperelastic
                   << "\n   arc length halved to " << ds << std::endl;
             // The predictor direction of u_n again (the tangent was
             // overwritten by the failed iterations).
+            stiffness_along_path(system, r_t, du_t);
+            continue;
+          }
+        if (!std::isfinite(land_at) && t_n < parameters.maximum_load_factor &&
+            t > parameters.maximum_load_factor)
+          {
+            system.restore_converged_state();
+            system.set_state(u_n, t_n);
+            land = true;
+            pcout << "   passed the maximum load factor (t = " << t
+                  << "): solved again, landing on it" << std::endl;
             stiffness_along_path(system, r_t, du_t);
             continue;
           }

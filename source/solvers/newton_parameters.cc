@@ -63,8 +63,8 @@ namespace hyperelastic
                       "back) when the step length would fall below this.");
     prm.declare_entry(
       "Tangent",
-      "exact, projected on failure",
-      Selection("exact|projected|exact, projected on failure"),
+      "automatic",
+      Selection("automatic|exact|projected|exact, projected on failure"),
       "'exact': full Newton with the exact tangent. 'projected': projected "
       "Newton: the negative eigenvalues of dP/dF at every quadrature point "
       "are clamped to zero, so the tangent is positive semi-definite and "
@@ -72,7 +72,14 @@ namespace hyperelastic
       "linearly convergent where the exact tangent is indefinite). 'exact, "
       "projected on failure': full Newton, and an iteration whose direction "
       "does not descend or whose line search fails is repeated with the "
-      "projected tangent.");
+      "projected tangent. 'automatic': dP/dF is projected at the quadrature "
+      "points where J <= 0 (only the models defined there reach them: "
+      "stable neo-Hookean, corotational, St. Venant-Kirchhoff) until the "
+      "residual has fallen by 1e-3 from the solve's first iteration, and is "
+      "exact everywhere after that, so Newton ends quadratically; an "
+      "iteration that fails is repeated with the tangent projected where "
+      "J <= 0, then everywhere. Without inverted points it is 'exact, "
+      "projected on failure'.");
     prm.declare_entry(
       "Inexact Newton",
       "true",
@@ -129,8 +136,9 @@ namespace hyperelastic
              "must be positive");
     const std::string tangent_name = prm.get("Tangent");
     tangent                    = tangent_name == "exact" ? NewtonTangent::exact
-                                 : tangent_name == "projected"
-                                   ? NewtonTangent::projected
+                                 : tangent_name == "projected" ? NewtonTangent::projected
+                                 : tangent_name == "automatic"
+                                   ? NewtonTangent::automatic
                                    : NewtonTangent::exact_then_projected;
     const std::string inverted = prm.get("Inverted elements at equilibrium");
     inverted_elements          = inverted == "reject" ? InvertedElements::reject

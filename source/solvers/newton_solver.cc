@@ -74,7 +74,9 @@ namespace hyperelastic
       else
         s << "";
       s << std::setw(9) << row.linear_iterations
-        << (row.projected ? "  projected" : "");
+        << (row.projected                  ? "  projected"
+            : row.projected_where_inverted ? "  projected where J <= 0"
+                                           : "");
       if (row.feasible_step < 1.)
         s << "  feasible step " << row.feasible_step;
       return s.str();
@@ -220,10 +222,23 @@ namespace hyperelastic
     for (unsigned int it = 1; it - budget_start <= parameters.max_iterations;
          ++it)
       {
+        const bool automatic = parameters.tangent == NewtonTangent::automatic;
         const bool fallback =
+          automatic ||
           parameters.tangent == NewtonTangent::exact_then_projected;
         NewtonIteration row;
         row.projected = parameters.tangent == NewtonTangent::projected;
+        // The automatic tangent: projected where elements are inverted while
+        // far from the solution (the exact tangent is indefinite there and
+        // Newton would climb to a saddle), exact near it (quadratic end).
+        TangentProjection projection = row.projected
+                                         ? TangentProjection::every_point
+                                         : TangentProjection::none;
+        if (automatic &&
+            (it == budget_start + 1 ||
+             current.residual > NewtonParameters::automatic_switch_ratio *
+                                  result.history[budget_start].residual))
+          projection = TangentProjection::inverted_points;
         unsigned int linear_its = 0;
         // The iteration that imposes the prescribed-displacement increment
         // is the load step's predictor: solved fully.
@@ -236,8 +251,7 @@ namespace hyperelastic
             try
               {
                 moving_constraints =
-                  system.assemble_linearization(moving_constraints,
-                                                row.projected);
+                  system.assemble_linearization(moving_constraints, projection);
                 linear_its += system.solve_linearization(row.forcing);
 
                 const bool test_merit =
@@ -267,8 +281,17 @@ namespace hyperelastic
             // Repeat this iteration from the same iterate with the projected
             // tangent, whose direction descends.
             system.evaluate_trial(0., NonlinearSystem::TrialCheck::none);
-            row.projected = true;
+            if (automatic && projection == TangentProjection::none)
+              projection = TangentProjection::inverted_points;
+            else
+              {
+                projection    = TangentProjection::every_point;
+                row.projected = true;
+              }
           }
+        row.projected_where_inverted =
+          projection == TangentProjection::inverted_points &&
+          !result.history.empty() && result.history.back().min_J <= 0.;
         row.iteration         = it;
         row.linear_iterations = linear_its;
         row.update            = system.accept_trial();

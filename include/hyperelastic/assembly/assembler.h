@@ -8,6 +8,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <hyperelastic/assembly/assembly_tools.h>
+#include <hyperelastic/base/tangent_projection_mode.h>
 
 namespace hyperelastic
 {
@@ -32,7 +33,7 @@ namespace hyperelastic
     virtual bool
     system(const VectorType                        &u,
            const dealii::AffineConstraints<double> &constraints,
-           bool                                     project_tangent,
+           TangentProjection                        project_tangent,
            MatrixType                              &matrix,
            VectorType                              &rhs) const = 0;
 

@@ -11,6 +11,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <hyperelastic/assembly/assembler.h>
+#include <hyperelastic/base/tangent_projection_mode.h>
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/loads/load_term.h>
 
@@ -84,12 +85,13 @@ namespace hyperelastic
     /// to positive semi-definite first (projected Newton); load stiffnesses
     /// are added as they are.
     void
-    assemble_system(const VectorType                        &u,
-                    const double                             t,
-                    const dealii::AffineConstraints<double> &constraints,
-                    MatrixType                              &matrix,
-                    VectorType                              &rhs,
-                    bool project_tangent = false) const;
+    assemble_system(
+      const VectorType                        &u,
+      const double                             t,
+      const dealii::AffineConstraints<double> &constraints,
+      MatrixType                              &matrix,
+      VectorType                              &rhs,
+      TangentProjection project_tangent = TangentProjection::none) const;
 
     /// Total potential energy (stored energy plus the potentials of the
     /// load terms; for a term without one, nothing is added) if

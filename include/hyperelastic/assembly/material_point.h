@@ -8,6 +8,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <hyperelastic/assembly/assembly_tools.h>
+#include <hyperelastic/base/tangent_projection_mode.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/materials/tangent_projection.h>
 
@@ -25,20 +26,23 @@ namespace hyperelastic
   }
 
   /// P and dP/dF of @p material at @p F, dP/dF projected to positive
-  /// semi-definite if @p project. Returns false if an entry is not finite
-  /// (then nothing is projected); the model's own exceptions propagate.
+  /// semi-definite as @p projection says (at every point, or where
+  /// det F <= 0). Returns false if an entry is not finite (then nothing is
+  /// projected); the model's own exceptions propagate.
   template <int dim>
   inline bool
   stress_and_tangent_at(const Material<dim>          &material,
                         const dealii::Tensor<2, dim> &F,
-                        const bool                    project,
+                        const TangentProjection       projection,
                         dealii::Tensor<2, dim>       &P,
                         StressTangent<dim>           &A)
   {
     material.stress_and_tangent(F, P, A);
     if (!stress_and_tangent_finite(P, A))
       return false;
-    if (project)
+    if (projection == TangentProjection::every_point ||
+        (projection == TangentProjection::inverted_points &&
+         dealii::determinant(F) <= 0.))
       project_to_positive_semidefinite(A);
     return true;
   }

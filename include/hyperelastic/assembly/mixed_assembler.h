@@ -54,7 +54,7 @@ namespace hyperelastic
     bool
     system(const VectorType                        &u,
            const dealii::AffineConstraints<double> &constraints,
-           bool                                     project_tangent,
+           TangentProjection                        project_tangent,
            MatrixType                              &matrix,
            VectorType                              &rhs) const override;
 
@@ -73,7 +73,7 @@ namespace hyperelastic
     void
     for_each_cell(const VectorType &u,
                   bool              with_matrix,
-                  bool              project_tangent,
+                  TangentProjection project_tangent,
                   Worker          &&worker) const;
 
     /// What evaluate_cell() computes: the bubble's own block (residual
@@ -88,9 +88,9 @@ namespace hyperelastic
 
     /// The cell's residual (and matrix) at its current values and bubble.
     void
-    evaluate_cell(CellData  &data,
-                  CellOutput output,
-                  bool       project_tangent) const;
+    evaluate_cell(CellData         &data,
+                  CellOutput        output,
+                  TangentProjection project_tangent) const;
 
     enum class BubbleOutcome
     {
@@ -101,12 +101,14 @@ namespace hyperelastic
 
     /// MINI: Newton on the cell's bubble equations from data.bubble.
     BubbleOutcome
-    iterate_bubble(CellData &data, bool project_tangent) const;
+    iterate_bubble(CellData &data, TangentProjection project_tangent) const;
 
     /// MINI: solve the cell's bubble equations (from the cell's last
     /// bubble, else from zero), then evaluate and condense.
     void
-    solve_bubble(CellData &data, bool with_matrix, bool project_tangent) const;
+    solve_bubble(CellData         &data,
+                 bool              with_matrix,
+                 TangentProjection project_tangent) const;
 
     const dealii::DoFHandler<dim>        &dof_handler;
     const dealii::Mapping<dim>           &mapping;

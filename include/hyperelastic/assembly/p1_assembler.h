@@ -58,7 +58,7 @@ namespace hyperelastic
     bool
     system(const VectorType                        &u,
            const dealii::AffineConstraints<double> &constraints,
-           bool                                     project_tangent,
+           TangentProjection                        project_tangent,
            MatrixType                              &matrix,
            VectorType                              &rhs) const override;
 

@@ -51,7 +51,7 @@ namespace hyperelastic
     bool
     system(const VectorType                        &u,
            const dealii::AffineConstraints<double> &constraints,
-           bool                                     project_tangent,
+           TangentProjection                        project_tangent,
            MatrixType                              &matrix,
            VectorType                              &rhs) const override;
 
@@ -75,7 +75,7 @@ namespace hyperelastic
     /// A vertex of the rank's owned or ghost cells.
     struct Vertex
     {
-      dealii::Point<dim>                             X;
+      dealii::Point<dim>                               X;
       std::array<dealii::types::global_dof_index, dim> dofs;
     };
     /// An owned vertex's row: its neighbours (itself included) with the
@@ -105,9 +105,9 @@ namespace hyperelastic
           const std::vector<Tensor<1, dim>> &dx,
           double                            &magnitude) const;
 
-    const dealii::DoFHandler<dim>  &dof_handler;
-    GenericAssembler<dim>           corotational;
-    std::vector<Vertex>             vertices;
-    Rows                            rows;
+    const dealii::DoFHandler<dim> &dof_handler;
+    GenericAssembler<dim>          corotational;
+    std::vector<Vertex>            vertices;
+    Rows                           rows;
   };
 } // namespace hyperelastic

@@ -1,5 +1,6 @@
 // Small helpers shared by the parameter subsections: rejecting a value with a
-// message naming the entry, reading a finite number, splitting expression lists.
+// message naming the entry, reading a finite number, splitting expression
+// lists.
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
@@ -25,7 +26,9 @@ namespace hyperelastic
 
   /// Throws InputError "scene entry 'entry' = 'value': why".
   [[noreturn]] void
-  reject(const std::string &entry, const std::string &value, const std::string &why);
+  reject(const std::string &entry,
+         const std::string &value,
+         const std::string &why);
 
   /// The double entry @p name of the current subsection @p section; rejected
   /// if not finite.
@@ -46,6 +49,11 @@ namespace hyperelastic
   /// Splits "a; b; c" into trimmed expressions; an all-blank string gives {}.
   std::vector<std::string>
   split_expressions(const std::string &text);
+
+  /// The 2 or 3 finite numbers of "x, y[, z]"; empty if @p text is not
+  /// such a list.
+  std::vector<double>
+  parse_coordinates(const std::string &text);
 
   /// 0, 1, 2 for "x", "y", "z".
   unsigned int

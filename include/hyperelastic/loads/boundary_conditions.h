@@ -16,6 +16,7 @@
 #include <hyperelastic/loads/loading_parameters.h>
 
 #include <memory>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -29,6 +30,17 @@ namespace hyperelastic
     boundary_id                            id;
     dealii::ComponentMask                  mask;
     std::unique_ptr<dealii::Function<dim>> displacement; ///< dim components
+    std::string                            subsection;
+    /// Only the vertex of the boundary at this reference point, if given.
+    std::optional<dealii::Point<dim>> vertex;
+  };
+
+  /// A force on the mesh vertex at @p point (Point load 1, ...).
+  template <int dim>
+  struct PointLoad
+  {
+    dealii::Point<dim>                     point;
+    std::unique_ptr<dealii::Function<dim>> force; ///< dim components
     std::string                            subsection;
   };
 
@@ -48,6 +60,7 @@ namespace hyperelastic
   {
     std::vector<DirichletBoundary<dim>>    dirichlet;
     std::vector<BoundaryLoad<dim>>         boundary_loads;
+    std::vector<PointLoad<dim>>            point_loads;
     std::unique_ptr<dealii::Function<dim>> body_force; ///< null: none
 
     /// Parses every expression and checks that each named boundary id exists
@@ -68,6 +81,17 @@ namespace hyperelastic
       const bool                                   homogeneous,
       dealii::AffineConstraints<double>           &constraints) const;
   };
+
+  /// Whether @p x is the vertex @p vertex of a cell of diameter @p h (to
+  /// round-off of the coordinates).
+  template <int dim>
+  inline bool
+  is_vertex_at(const dealii::Point<dim> &vertex,
+               const dealii::Point<dim> &x,
+               const double              h)
+  {
+    return vertex.distance(x) <= 1e-8 * h;
+  }
 
   /// A function of (x, y, (z,) t) with one component per expression.
   /// Throws InputError naming @p entry if an expression does not parse.

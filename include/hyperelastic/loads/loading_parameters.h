@@ -23,6 +23,17 @@ namespace hyperelastic
     std::vector<unsigned int>  components;  ///< 0 = x, 1 = y, 2 = z
     std::vector<std::string>   expressions; ///< one per entry of components
     std::string                subsection;  ///< for error messages
+    /// Reference coordinates of the one vertex of the boundary that is
+    /// constrained ("Vertex"); empty: the whole boundary.
+    std::vector<double> vertex;
+  };
+
+  /// A force on one mesh vertex ("Point load 1", ...).
+  struct PointLoadSection
+  {
+    std::vector<double>      point;       ///< reference coordinates
+    std::vector<std::string> expressions; ///< dim expressions of x, y, (z,) t
+    std::string              subsection;  ///< "Point load 1", for messages
   };
 
   /// How a kind of boundary load appears in a scene: the sections
@@ -33,7 +44,7 @@ namespace hyperelastic
   struct BoundaryLoadKind
   {
     std::string  name;
-    unsigned int max_sections = 4;
+    unsigned int max_sections  = 4;
     bool         vector_valued = true;
     std::string  default_value;
     /// Documentation of "Boundary id" and of the value entry.
@@ -60,8 +71,10 @@ namespace hyperelastic
     /// The used sections of every registered kind, kind by kind in the
     /// order of boundary_load_kinds().
     std::vector<BoundaryLoadSection> boundary_loads;
+    std::vector<PointLoadSection>    point_loads;
 
-    static constexpr unsigned int max_dirichlet = 8;
+    static constexpr unsigned int max_dirichlet   = 8;
+    static constexpr unsigned int max_point_loads = 4;
 
     static void
     declare(ParameterHandler &prm);

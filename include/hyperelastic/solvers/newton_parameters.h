@@ -12,9 +12,12 @@ namespace hyperelastic
   /// Which tangent Newton uses.
   enum class NewtonTangent
   {
-    exact,               ///< full Newton
-    projected,           ///< dP/dF projected to semi-definite everywhere
-    exact_then_projected ///< full Newton; projected where its step fails
+    exact,                ///< full Newton
+    projected,            ///< dP/dF projected to semi-definite everywhere
+    exact_then_projected, ///< full Newton; projected where its step fails
+    /// projected where J <= 0 until the residual has fallen by
+    /// automatic_switch_ratio, exact after; projected on failure
+    automatic
   };
 
   /// What happens to a converged state with inverted elements (J <= 0 at a
@@ -35,7 +38,10 @@ namespace hyperelastic
     bool          line_search                 = true;
     double        armijo_constant             = 1e-4;
     double        minimum_step_length         = 1e-4;
-    NewtonTangent tangent = NewtonTangent::exact_then_projected;
+    NewtonTangent tangent                     = NewtonTangent::automatic;
+    /// The automatic tangent is exact once the residual is below this
+    /// times the first residual of the solve.
+    static constexpr double automatic_switch_ratio = 1e-3;
     /// Inexact Newton: Krylov tolerances from the Eisenstat-Walker forcing
     /// terms (choice 2), at most max_forcing.
     bool   inexact     = true;

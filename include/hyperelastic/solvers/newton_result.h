@@ -21,7 +21,9 @@ namespace hyperelastic
     unsigned int linear_iterations = 0;
     /// Relative Krylov tolerance asked for (0: the linear solver's own).
     double forcing   = 0.;
-    bool   projected = false; ///< tangent made semi-definite
+    bool   projected = false; ///< tangent made semi-definite everywhere
+    /// dP/dF projected at the quadrature points with J <= 0 only.
+    bool projected_where_inverted = false;
     /// Whether the energy had to decrease (sufficient decrease) in this
     /// iteration's line search; false while prescribed displacements are
     /// still being imposed or without a line search.

@@ -6,6 +6,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
+#include <hyperelastic/base/tangent_projection_mode.h>
 #include <hyperelastic/solvers/newton_parameters.h>
 #include <hyperelastic/solvers/newton_result.h>
 
@@ -56,11 +57,11 @@ namespace hyperelastic
     /// the next update must also move the constrained unknowns from their
     /// current to their prescribed values. Returns whether that increment is
     /// non-zero anywhere (false without @p impose_constraint_increment).
-    /// With @p positive_semidefinite the tangent is made positive
-    /// semi-definite (projected Newton), so that the direction descends.
+    /// @p projection says where dP/dF is made positive semi-definite
+    /// (projected Newton: everywhere, and the direction descends).
     virtual bool
-    assemble_linearization(bool impose_constraint_increment,
-                           bool positive_semidefinite) = 0;
+    assemble_linearization(bool              impose_constraint_increment,
+                           TangentProjection projection) = 0;
 
     /// Solve the linearized system for the direction du, with a Krylov
     /// method to the relative tolerance @p forcing (0: as accurately as the
