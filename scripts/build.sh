@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Configures and builds hyperelastic in build/ (Release unless BUILD_TYPE is set).
+# Configures and builds hyperelastic in build/ (Release unless BUILD_TYPE is set):
+# every target, or only the targets named as arguments (scripts/build.sh
+# hyperelastic: the program without the test suite).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build_type=${BUILD_TYPE:-Release}
@@ -14,4 +16,8 @@ if command -v ccache >/dev/null 2>&1; then
   export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 fi
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE="$build_type" "${launcher[@]}" >/dev/null
-cmake --build "$root/build" -j "$(nproc)"
+targets=()
+for target in "$@"; do
+  targets+=(--target "$target")
+done
+cmake --build "$root/build" -j "$(nproc)" "${targets[@]}"
