@@ -107,25 +107,25 @@ def crush():
     cases += [("corotational", tangent, 20)
               for tangent in ("exact, projected on failure", "automatic")]
     for model, tangent, iterations in cases:
-            name = "crush_%s_%s_%d" % (model.split()[0],
-                                       tangent.split(",")[0], iterations)
-            if "failure" in tangent:
-                name = "crush_%s_fallback_%d" % (model.split()[0], iterations)
-            code, wall, rows = run(name, CRUSH.format(
-                steps=1, method="load control", tangent=tangent,
-                iterations=iterations, out=OUT,
-                name=name).replace("stable neo-Hookean", model))
-            its = [int(r["newton_iterations"]) for r in rows]
-            table.append({
-                "model": model,
-                "tangent": tangent, "max_iterations": iterations,
-                "completed": int(code == 0), "load_steps": len(rows),
-                "newton_iterations": sum(its),
-                "largest_per_step": max(its) if its else 0,
-                "cut_backs": sum(int(r["cut_backs"]) for r in rows),
-                "last_t": float(rows[-1]["load_factor"]) if rows else 0.,
-                "wall_s": round(wall, 2)})
-            print(table[-1])
+        name = "crush_%s_%s_%d" % (model.split()[0],
+                                   tangent.split(",")[0], iterations)
+        if "failure" in tangent:
+            name = "crush_%s_fallback_%d" % (model.split()[0], iterations)
+        code, wall, rows = run(name, CRUSH.format(
+            steps=1, method="load control", tangent=tangent,
+            iterations=iterations, out=OUT,
+            name=name).replace("stable neo-Hookean", model))
+        its = [int(r["newton_iterations"]) for r in rows]
+        table.append({
+            "model": model,
+            "tangent": tangent, "max_iterations": iterations,
+            "completed": int(code == 0), "load_steps": len(rows),
+            "newton_iterations": sum(its),
+            "largest_per_step": max(its) if its else 0,
+            "cut_backs": sum(int(r["cut_backs"]) for r in rows),
+            "last_t": float(rows[-1]["load_factor"]) if rows else 0.,
+            "wall_s": round(wall, 2)})
+        print(table[-1])
     write(os.path.join(HERE, "crush.csv"), table)
     code, wall, rows = run("crush_path", CRUSH.format(
         steps=20, method="arc length",
