@@ -6,14 +6,17 @@
 // static initialisation across files is unspecified, while the order here
 // fixes the order of the names in the documentation and in error messages.
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/materials/arruda_boyce.h>
 #include <hyperelastic/materials/corotational.h>
 #include <hyperelastic/materials/decoupled_neo_hookean.h>
+#include <hyperelastic/materials/gent.h>
 #include <hyperelastic/materials/linear_elastic.h>
 #include <hyperelastic/materials/material_registry.h>
 #include <hyperelastic/materials/mooney_rivlin.h>
 #include <hyperelastic/materials/neo_hookean.h>
 #include <hyperelastic/materials/st_venant_kirchhoff.h>
 #include <hyperelastic/materials/stable_neo_hookean.h>
+#include <hyperelastic/materials/yeoh.h>
 
 namespace hyperelastic
 {
@@ -29,6 +32,9 @@ namespace hyperelastic
       make_material_model<StableNeoHookean>(),
       make_material_model<DecoupledNeoHookean>(),
       make_material_model<MooneyRivlin>(),
+      make_material_model<Yeoh>(),
+      make_material_model<Gent>(),
+      make_material_model<ArrudaBoyce>(),
     };
     return models;
   }

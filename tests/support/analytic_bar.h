@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -70,6 +72,41 @@ namespace hyperelastic::testing
     while (!(g(upper) > 0.) && upper < 1e6)
       upper *= 2.;
     const double l2 = bisect(g, 1e-6, upper);
+    return {l2, stretch_term(l2, l1) / l1};
+  }
+
+  /// A decoupled model psi = W(Ib) + kappa/4 (J^2 - 1 - 2 ln J), Ib =
+  /// J^(-2/3) I1, given by W'(Ib) (NaN where its chains lock): with
+  /// F = diag(l1, l2, l2) (3D) or diag(l1, l2, 1),
+  ///   l_a P_aa = 2 W'(Ib) J^(-2/3) (l_a^2 - I1/3) + kappa/2 (J^2 - 1),
+  /// and P22 = 0 solved for l2 by bisection; kappa = infinity: J = 1 and
+  /// the pressure cancels l2 P22.
+  inline UniaxialState
+  uniaxial_first_invariant(const int                            dim,
+                           const double                         l1,
+                           const std::function<double(double)> &W1,
+                           const double                         kappa)
+  {
+    const auto l3 = [&](const double l2) { return dim == 3 ? l2 : 1.; };
+    if (std::isinf(kappa))
+      {
+        // J = 1; the pressure cancels l2 P22, leaving P11.
+        const double l2 = dim == 3 ? 1. / std::sqrt(l1) : 1. / l1;
+        const double I1 = l1 * l1 + l2 * l2 + l3(l2) * l3(l2);
+        return {l2, 2. * W1(I1) * (l1 * l1 - l2 * l2) / l1};
+      }
+    const auto stretch_term = [&](const double l2, const double la) {
+      const double J   = l1 * l2 * l3(l2);
+      const double I1  = l1 * l1 + l2 * l2 + l3(l2) * l3(l2);
+      const double J23 = std::pow(J, -2. / 3.);
+      const double w   = W1(J23 * I1);
+      const double iso = la * la - I1 / 3.;
+      if (std::isnan(w)) // locked: W' -> +infinity
+        return iso < 0. ? -1e300 : 1e300;
+      return 2. * w * J23 * iso + 0.5 * kappa * (J * J - 1.);
+    };
+    const double l2 =
+      bisect([&](const double l2) { return stretch_term(l2, l2); }, 1e-3, 10.);
     return {l2, stretch_term(l2, l1) / l1};
   }
 
@@ -184,6 +221,33 @@ namespace hyperelastic::testing
           return {1. - nu * e11, E * e11};
         const double e22 = -lambda * e11 / (2. * mu + lambda);
         return {1. + e22, (2. * mu + lambda) * e11 + lambda * e22};
+      }
+    // The registry's small-strain constants of the first-invariant rubber
+    // models (yeoh.h, gent.h, arruda_boyce.h), kappa = lambda + 2 mu / 3.
+    const double kappa = lambda + 2. / 3. * mu;
+    if (model == "Yeoh") // C10 = mu / 2, C20 = C30 = 0
+      return uniaxial_first_invariant(
+        dim, l1, [&](double) { return 0.5 * mu; }, kappa);
+    if (model == "Gent") // Jm = 97
+      return uniaxial_first_invariant(
+        dim,
+        l1,
+        [&](const double Ib) { return 0.5 * mu / (1. - (Ib - 3.) / 97.); },
+        kappa);
+    if (model == "Arruda-Boyce") // lm = 7, the series' mu from mu
+      {
+        const double c[5] = {
+          0.5, 0.05, 11. / 1050., 19. / 7000., 519. / 673750.};
+        const auto W1 = [&](const double m, const double Ib) {
+          double sum = 0.;
+          for (int i = 1; i <= 5; ++i)
+            sum += m * c[i - 1] * i * std::pow(7., 2. - 2. * i) *
+                   std::pow(Ib, i - 1.);
+          return sum;
+        };
+        const double chains = mu / (2. * W1(1., 3.));
+        return uniaxial_first_invariant(
+          dim, l1, [&](const double Ib) { return W1(chains, Ib); }, kappa);
       }
     throw std::invalid_argument("no analytic solution for model " + model);
   }

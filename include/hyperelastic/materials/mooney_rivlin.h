@@ -55,6 +55,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/materials/constant_entries.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/materials/volumetric_split.h>
 
@@ -135,7 +136,7 @@ namespace hyperelastic
       MooneyRivlinConstants constants;
       constants.c1    = get_finite(prm, section, "C1");
       constants.c2    = get_finite(prm, section, "C2");
-      constants.kappa = get_bulk_modulus(prm, section, "Bulk modulus");
+      constants.kappa = parse_bulk_modulus_entry(prm, section);
       if (constants.c1 < 0.)
         reject(section + "/C1",
                prm.get("C1"),
@@ -151,10 +152,6 @@ namespace hyperelastic
                prm.get("C1"),
                "C1 + C2 must be positive: the small-strain shear modulus is "
                "2 (C1 + C2)");
-      if (!(constants.kappa > 0.))
-        reject(section + "/Bulk modulus",
-               prm.get("Bulk modulus"),
-               "must be positive");
       return constants;
     }
 
@@ -162,11 +159,7 @@ namespace hyperelastic
     std::vector<std::pair<std::string, std::string>>
     entries() const
     {
-      const auto text = [](const double x) {
-        std::ostringstream s;
-        s << std::setprecision(17) << x;
-        return s.str();
-      };
+      const auto text = exact_entry_text;
       return {{"C1", text(c1)},
               {"C2", text(c2)},
               {"Bulk modulus", text(kappa)}};
