@@ -14,6 +14,7 @@
 #include <hyperelastic/materials/material_registry.h>
 #include <hyperelastic/materials/mooney_rivlin.h>
 #include <hyperelastic/materials/neo_hookean.h>
+#include <hyperelastic/materials/ogden.h>
 #include <hyperelastic/materials/st_venant_kirchhoff.h>
 #include <hyperelastic/materials/stable_neo_hookean.h>
 #include <hyperelastic/materials/yeoh.h>
@@ -35,6 +36,7 @@ namespace hyperelastic
       make_material_model<Yeoh>(),
       make_material_model<Gent>(),
       make_material_model<ArrudaBoyce>(),
+      make_material_model<Ogden>(),
     };
     return models;
   }

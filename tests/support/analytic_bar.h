@@ -225,7 +225,10 @@ namespace hyperelastic::testing
     // The registry's small-strain constants of the first-invariant rubber
     // models (yeoh.h, gent.h, arruda_boyce.h), kappa = lambda + 2 mu / 3.
     const double kappa = lambda + 2. / 3. * mu;
-    if (model == "Yeoh") // C10 = mu / 2, C20 = C30 = 0
+    // Yeoh from small strain: C10 = mu / 2, C20 = C30 = 0.
+    // Ogden from small strain: mu1 = mu, alpha1 = 2 alone, i.e.
+    // (mu/2) (sum lb_i^2 - 3) = (mu/2) (Ib - 3).
+    if (model == "Yeoh" || model == "Ogden")
       return uniaxial_first_invariant(
         dim, l1, [&](double) { return 0.5 * mu; }, kappa);
     if (model == "Gent") // Jm = 97

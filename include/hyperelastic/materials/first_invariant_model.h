@@ -39,7 +39,7 @@
 //                       the law is undefined (Gent at or beyond locking).
 #pragma once
 
-#include <hyperelastic/materials/material.h>
+#include <hyperelastic/materials/evaluated_material.h>
 #include <hyperelastic/materials/volumetric_split.h>
 
 #include <cmath>
@@ -50,11 +50,10 @@
 namespace hyperelastic
 {
   template <int dim, typename Law>
-  class FirstInvariantModel : public Material<dim>
+  class FirstInvariantModel : public EvaluatedMaterial<dim>
   {
   public:
     using Constants = typename Law::Constants;
-    using Material<dim>::not_a_number_tensor;
 
     explicit FirstInvariantModel(const Constants &constants)
         : constants(constants)
@@ -120,32 +119,6 @@ namespace hyperelastic
       return W + volumetric_energy(J);
     }
 
-    Tensor<2, dim>
-    first_piola_kirchhoff(const Tensor<2, dim> &F) const override
-    {
-      Tensor<2, dim>     P;
-      StressTangent<dim> A;
-      evaluate(F, P, A, false);
-      return P;
-    }
-
-    StressTangent<dim>
-    stress_tangent(const Tensor<2, dim> &F) const override
-    {
-      Tensor<2, dim>     P;
-      StressTangent<dim> A;
-      evaluate(F, P, A, true);
-      return A;
-    }
-
-    void
-    stress_and_tangent(const Tensor<2, dim> &F,
-                       Tensor<2, dim>       &P,
-                       StressTangent<dim>   &A) const override
-    {
-      evaluate(F, P, A, true);
-    }
-
     /// The constants the model was built from.
     const Constants &
     model_constants() const
@@ -185,18 +158,14 @@ namespace hyperelastic
     evaluate(const Tensor<2, dim> &F,
              Tensor<2, dim>       &P,
              StressTangent<dim>   &A,
-             const bool            with_tangent) const
+             const bool            with_tangent) const override
     {
       const double J = determinant(F);
       double       W = 0., W1 = 0., W2 = 0.;
       const double Ib = J > 0. ? isochoric_invariant(F, J) : 0.;
       if (!(J > 0.) || !Law::evaluate(constants, Ib, W, W1, W2))
         {
-          P = not_a_number_tensor();
-          if (with_tangent)
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int J_ = 0; J_ < dim; ++J_)
-                A[i][J_] = not_a_number_tensor();
+          EvaluatedMaterial<dim>::undefined_at(P, A, with_tangent);
           return;
         }
       const Tensor<2, dim> G  = transpose(invert(F));
