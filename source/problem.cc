@@ -14,6 +14,7 @@
 #include <hyperelastic/problem.h>
 #include <hyperelastic/solvers/rigid_body_modes.h>
 
+#include <chrono>
 #include <iomanip>
 
 namespace hyperelastic
@@ -332,6 +333,17 @@ namespace hyperelastic
     if (parameters.output.write_vtu)
       write_fields(0);
 
+    // Progress: the elapsed wall time, and the remaining time estimated
+    // from the fraction of the load factor (or time) done, where the run's
+    // end is known in t (not along an arc-length path, whose t may fall).
+    const bool along_path =
+      !parameters.time_integration.dynamic() &&
+      parameters.load_stepping.method == LoadControl::arc_length;
+    const double t_end =
+      parameters.time_integration.dynamic()
+        ? parameters.time_integration.end_time
+        : (along_path ? parameters.load_stepping.maximum_load_factor : 1.);
+    const auto start = std::chrono::steady_clock::now();
     stepping->stepper(pcout).run(
       newton, *system, [&](const LoadStep &step, const NewtonResult &result) {
         const StepSummary<dim> summary = summarize(step, result);
@@ -347,6 +359,16 @@ namespace hyperelastic
         pcout << "); energy " << std::setprecision(10) << summary.energy
               << ", min J " << summary.min_J << std::setprecision(6)
               << std::endl;
+        const double elapsed = std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - start)
+                                 .count();
+        const double done = step.load_factor / t_end;
+        pcout << "   progress: t = " << step.load_factor << " of " << t_end
+              << ", " << std::fixed << std::setprecision(1) << elapsed
+              << " s elapsed";
+        if (!along_path && done > 0. && done < 1.)
+          pcout << ", about " << elapsed * (1. - done) / done << " s to go";
+        pcout << std::defaultfloat << std::setprecision(6) << std::endl;
       });
     if (self_contact)
       {
