@@ -1,10 +1,14 @@
 // Base of the models that compute P and dP/dF in one routine,
 // evaluate(F, P, A, with_tangent) (first_invariant_model.h, ogden.h): the
 // three Material entry points call it, and undefined_at() fills P and A
-// with NaN where the model is undefined.
+// with NaN where the model is undefined. decoupled_split() gives such a
+// decoupled model's volumetric-isochoric split.
 #pragma once
 
 #include <hyperelastic/materials/material.h>
+#include <hyperelastic/materials/volumetric_split.h>
+
+#include <memory>
 
 namespace hyperelastic
 {
@@ -59,4 +63,18 @@ namespace hyperelastic
             A[i][J] = Material<dim>::not_a_number_tensor();
     }
   };
+
+  /// The split of a decoupled @p Model whose @p constants carry the bulk
+  /// modulus kappa of U = kappa/4 (J^2 - 1 - 2 ln J): the isochoric part is
+  /// the same model with kappa = 0.
+  template <int dim, typename Model, typename Constants>
+  std::unique_ptr<VolumetricSplit<dim>>
+  decoupled_split(const Constants &constants)
+  {
+    Constants isochoric = constants;
+    isochoric.kappa     = 0.;
+    return std::make_unique<VolumetricSplit<dim>>(
+      VolumetricSplit<dim>{std::make_unique<Model>(isochoric),
+                           LogVolumetricEnergy(constants.kappa)});
+  }
 } // namespace hyperelastic

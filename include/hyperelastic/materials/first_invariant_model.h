@@ -95,11 +95,7 @@ namespace hyperelastic
     std::unique_ptr<VolumetricSplit<dim>>
     volumetric_split() const override
     {
-      Constants isochoric = constants;
-      isochoric.kappa     = 0.;
-      return std::make_unique<VolumetricSplit<dim>>(VolumetricSplit<dim>{
-        std::make_unique<FirstInvariantModel<dim, Law>>(isochoric),
-        LogVolumetricEnergy(constants.kappa)});
+      return decoupled_split<dim, FirstInvariantModel<dim, Law>>(constants);
     }
 
     bool

@@ -181,11 +181,7 @@ namespace hyperelastic
     std::unique_ptr<VolumetricSplit<dim>>
     volumetric_split() const override
     {
-      OgdenConstants isochoric = constants;
-      isochoric.kappa          = 0.;
-      return std::make_unique<VolumetricSplit<dim>>(
-        VolumetricSplit<dim>{std::make_unique<Ogden<dim>>(isochoric),
-                             LogVolumetricEnergy(constants.kappa)});
+      return decoupled_split<dim, Ogden<dim>>(constants);
     }
 
     bool
