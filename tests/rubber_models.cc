@@ -151,7 +151,6 @@ namespace
   void
   uniaxial(Checker &checker, const std::string &model, const bool mixed)
   {
-    const bool        three = dim == 3;
     const RubberModel law   = rubber_model(model, mixed ? "inf" : "5");
     const double kappa = mixed ? std::numeric_limits<double>::infinity() : 5.;
     for (const double l1 : {1.6, 0.6})
@@ -160,20 +159,7 @@ namespace
                                 (mixed ? " (mixed, incompressible)" : "") +
                                 ", l1 = " + std::to_string(l1) + ": ";
         const std::string scene =
-          subsection("Problem",
-                     entry("Dimension", std::to_string(dim)) +
-                       entry("Formulation", mixed ? "mixed" : "displacement")) +
-          subsection("Mesh",
-                     entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                       entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
-                       entry("Subdivisions", three ? "3, 1, 1" : "6, 2")) +
-          subsection("Material",
-                     entry("Model", model) + subsection(model, law.entries)) +
-          subsection("Loading", entry("Number of load steps", "4")) +
-          tight_solver("direct") + dirichlet(1, 0, "x", "0") +
-          dirichlet(2, 2, "y", "0") + (three ? dirichlet(3, 4, "z", "0") : "") +
-          dirichlet(4, 1, "x", std::to_string(3. * (l1 - 1.)) + "*t") +
-          subsection("Output", entry("Write VTU", "false"));
+          rollered_bar_stretch(dim, model, law.entries, l1, mixed);
         const auto          problem = run_scene<dim>(scene);
         const auto         &last    = problem->summaries().back();
         const UniaxialState exact   = law.exact(dim, l1, kappa);

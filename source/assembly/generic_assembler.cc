@@ -46,6 +46,8 @@ namespace hyperelastic
     /// F = I + grad u at the quadrature points.
     std::vector<Tensor<2, dim>> F;
     std::vector<unsigned int>   component;
+    /// The cell's active index.
+    unsigned int cell = 0;
   };
 
   template <int dim>
@@ -56,6 +58,7 @@ namespace hyperelastic
       , mapping(mapping)
       , material(material)
       , quadrature(QGaussSimplex<dim>(dof_handler.get_fe().degree))
+      , materials(material, dof_handler, mapping, quadrature)
   {
   }
 
@@ -70,6 +73,7 @@ namespace hyperelastic
       cell->get_dof_indices(data.dofs);
       cell->get_dof_values(u, data.u);
       data.values.reinit(cell);
+      data.cell = cell->active_cell_index();
       for (unsigned int q = 0; q < data.F.size(); ++q)
         {
           Tensor<2, dim> F = unit_symmetric_tensor<dim>();
@@ -93,9 +97,10 @@ namespace hyperelastic
       cell_internal = 0.;
       for (unsigned int q = 0; q < data.F.size(); ++q)
         {
-          const Tensor<2, dim> P   = material.first_piola_kirchhoff(data.F[q]);
-          const double         JxW = data.values.JxW(q);
-          double               gradient_sum = 0.;
+          const Tensor<2, dim> P =
+            materials(data.cell, q).first_piola_kirchhoff(data.F[q]);
+          const double JxW          = data.values.JxW(q);
+          double       gradient_sum = 0.;
           for (unsigned int i = 0; i < cell_internal.size(); ++i)
             {
               const Tensor<1, dim> grad = data.gradient(i, q);
@@ -134,7 +139,7 @@ namespace hyperelastic
       for (unsigned int q = 0; q < data.F.size(); ++q)
         {
           if (!stress_and_tangent_at(
-                material, data.F[q], project_tangent, P, A))
+                materials(data.cell, q), data.F[q], project_tangent, P, A))
             throw std::domain_error(non_finite_stress_message());
           const double JxW = data.values.JxW(q);
           for (unsigned int i = 0; i < n; ++i)
@@ -177,7 +182,7 @@ namespace hyperelastic
           if (!with_energy)
             continue;
           const double JxW = data.values.JxW(q);
-          const double psi = material.energy_density(data.F[q]);
+          const double psi = materials(data.cell, q).energy_density(data.F[q]);
           energy += psi * JxW;
           round_off.add_energy(psi, data.F[q], JxW);
         }

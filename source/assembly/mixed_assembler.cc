@@ -128,6 +128,10 @@ namespace hyperelastic
       , split(material.volumetric_split())
       , element(element)
       , quadrature(QGaussSimplex<dim>(quadrature_points_1d(element)))
+      , isochoric(split ? *split->isochoric : material,
+                  dof_handler,
+                  mapping,
+                  quadrature)
       , inverse_shear_modulus(1. / material.small_strain_moduli().mu)
   {
     AssertThrow(split != nullptr,
@@ -149,12 +153,11 @@ namespace hyperelastic
   {
     const bool with_matrix = output != CellOutput::residual;
     // The bubble's block: its rows and columns only, no energy.
-    const bool           bubble_only = output == CellOutput::bubble_block;
-    const unsigned int   first       = bubble_only ? data.n : 0;
-    const unsigned int   n_total     = data.n + data.n_bubble;
-    const Material<dim> &iso         = *split->isochoric;
-    const auto          &vol         = split->volumetric;
-    data.residual                    = 0.;
+    const bool         bubble_only = output == CellOutput::bubble_block;
+    const unsigned int first       = bubble_only ? data.n : 0;
+    const unsigned int n_total     = data.n + data.n_bubble;
+    const auto        &vol         = split->volumetric;
+    data.residual                  = 0.;
     if (with_matrix)
       data.matrix = 0.;
     data.energy    = 0.;
@@ -183,8 +186,9 @@ namespace hyperelastic
         volume += JxW;
         p_mean += p * JxW;
 
-        const double J = determinant(F);
-        data.min_J     = std::min(data.min_J, J);
+        const Material<dim> &iso = isochoric(data.cell_index, q);
+        const double         J   = determinant(F);
+        data.min_J               = std::min(data.min_J, J);
         if (!(J > 0.))
           {
             // Outside the model's domain: no finite residual.

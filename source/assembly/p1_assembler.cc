@@ -31,6 +31,7 @@ namespace hyperelastic
                                 const Material<dim>   &material)
       : dof_handler(dof_handler)
       , material(material)
+      , materials(material, dof_handler)
   {
     const FiniteElement<dim> &fe    = dof_handler.get_fe();
     const IndexSet            owned = dof_handler.locally_owned_dofs();
@@ -148,7 +149,7 @@ namespace hyperelastic
         try
           {
             F = deformation_gradient(c, U);
-            P = material.first_piola_kirchhoff(F);
+            P = materials(c.active_index, 0).first_piola_kirchhoff(F);
           }
         catch (const std::exception &e)
           {
@@ -338,8 +339,11 @@ namespace hyperelastic
         bool finite = false;
         try
           {
-            finite = stress_and_tangent_at(
-              material, deformation_gradient(c, U), project_tangent, P, A);
+            finite = stress_and_tangent_at(materials(c.active_index, 0),
+                                           deformation_gradient(c, U),
+                                           project_tangent,
+                                           P,
+                                           A);
           }
         catch (const std::exception &e)
           {
@@ -445,7 +449,7 @@ namespace hyperelastic
           double psi;
           try
             {
-              psi = material.energy_density(F);
+              psi = materials(c.active_index, 0).energy_density(F);
             }
           catch (const std::exception &e)
             {

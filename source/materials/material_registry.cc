@@ -10,6 +10,7 @@
 #include <hyperelastic/materials/corotational.h>
 #include <hyperelastic/materials/decoupled_neo_hookean.h>
 #include <hyperelastic/materials/gent.h>
+#include <hyperelastic/materials/holzapfel_gasser_ogden.h>
 #include <hyperelastic/materials/linear_elastic.h>
 #include <hyperelastic/materials/material_registry.h>
 #include <hyperelastic/materials/mooney_rivlin.h>
@@ -37,6 +38,7 @@ namespace hyperelastic
       make_material_model<Gent>(),
       make_material_model<ArrudaBoyce>(),
       make_material_model<Ogden>(),
+      make_material_model<HolzapfelGasserOgden>(),
     };
     return models;
   }

@@ -29,19 +29,27 @@ namespace hyperelastic
     for (auto &c : fields.cauchy)
       c.reinit(n_cells);
 
-    const QGaussSimplex<dim>         quadrature(dof_handler.get_fe().degree);
+    const QGaussSimplex<dim> quadrature(dof_handler.get_fe().degree);
+    // A model whose constants vary with position (fibre directions) is
+    // evaluated at each quadrature point, with its 3D twin there.
+    const bool                       by_point = material.depends_on_position();
     FEValues<dim>                    values(mapping,
                          dof_handler.get_fe(),
                          quadrature,
-                         update_values | update_gradients | update_JxW_values);
+                         update_values | update_gradients | update_JxW_values |
+                           (by_point ? update_quadrature_points
+                                                        : update_default));
     const FEValuesExtractors::Vector displacement(0);
     std::vector<Tensor<2, dim>>      grad_u(quadrature.size());
     // Mixed formulation: the stress is P_iso + p J F^-T and the energy
     // density psi_iso + p (J - 1) - U*(p) (= psi where p = U'(J)), from the
     // pressure unknown; the full model may have kappa = infinity.
     const bool mixed   = dof_handler.get_fe().n_components() > dim;
-    const auto split   = mixed ? material.volumetric_split() : nullptr;
-    const auto split3d = mixed ? material3d.volumetric_split() : nullptr;
+    auto       split   = mixed ? material.volumetric_split() : nullptr;
+    auto       split3d = mixed ? material3d.volumetric_split() : nullptr;
+    // The model (and its 3D twin) at a point of a by_point model.
+    std::unique_ptr<Material<dim>>   point_model;
+    std::unique_ptr<Material<3>>     point_model3d;
     const FEValuesExtractors::Scalar pressure(dim);
     std::vector<double>              p(quadrature.size(), 0.);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -58,6 +66,20 @@ namespace hyperelastic
             {
               const double         JxW = values.JxW(q);
               const Tensor<2, dim> F   = deformation_gradient_of(grad_u[q]);
+              if (by_point)
+                {
+                  point_model =
+                    material.at_position(values.quadrature_point(q));
+                  point_model3d = point_model->three_dimensional_twin();
+                  if (mixed)
+                    {
+                      split   = point_model->volumetric_split();
+                      split3d = point_model3d->volumetric_split();
+                    }
+                }
+              const Material<dim> &model = by_point ? *point_model : material;
+              const Material<3>   &model3d =
+                by_point ? *point_model3d : material3d;
               // Plane strain: the 3D F is diag(F, 1).
               Tensor<2, 3> F3 = unit_symmetric_tensor<3>();
               for (unsigned int i = 0; i < dim; ++i)
@@ -79,10 +101,9 @@ namespace hyperelastic
                 }
               else
                 {
-                  fields.energy_density[index] +=
-                    material.energy_density(F) * JxW;
-                  sigma += material3d.first_piola_kirchhoff(F3) *
-                           transpose(F3) / determinant(F3) * JxW;
+                  fields.energy_density[index] += model.energy_density(F) * JxW;
+                  sigma += model3d.first_piola_kirchhoff(F3) * transpose(F3) /
+                           determinant(F3) * JxW;
                 }
               volume += JxW;
             }

@@ -228,7 +228,10 @@ namespace hyperelastic::testing
     // Yeoh from small strain: C10 = mu / 2, C20 = C30 = 0.
     // Ogden from small strain: mu1 = mu, alpha1 = 2 alone, i.e.
     // (mu/2) (sum lb_i^2 - 3) = (mu/2) (Ib - 3).
-    if (model == "Yeoh" || model == "Ogden")
+    // Holzapfel-Gasser-Ogden from small strain: the matrix mu/2 (Ib - 3)
+    // alone (k1 = 0).
+    if (model == "Yeoh" || model == "Ogden" ||
+        model == "Holzapfel-Gasser-Ogden")
       return uniaxial_first_invariant(
         dim, l1, [&](double) { return 0.5 * mu; }, kappa);
     if (model == "Gent") // Jm = 97

@@ -81,7 +81,8 @@ namespace hyperelastic::testing
     const bool three = dim == 3;
     return subsection("Problem",
                       entry("Dimension", std::to_string(dim)) +
-                        entry("Finite element degree", std::to_string(degree))) +
+                        entry("Finite element degree",
+                              std::to_string(degree))) +
            subsection("Mesh",
                       entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
                         entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
@@ -113,8 +114,8 @@ namespace hyperelastic::testing
            subsection("Mesh",
                       entry("Upper corner", "4, 1, 1") +
                         entry("Subdivisions",
-                              std::to_string(4 * n) + ", " +
-                                std::to_string(n) + ", " + std::to_string(n))) +
+                              std::to_string(4 * n) + ", " + std::to_string(n) +
+                                ", " + std::to_string(n))) +
            subsection("Material",
                       entry("Model", "neo-Hookean") +
                         entry("Young's modulus", "1") +
@@ -137,5 +138,36 @@ namespace hyperelastic::testing
                      "0; 0.5 + (y - 0.5)*cos(pi/2*t) - (z - 0.5)*sin(pi/2*t)"
                      " - y; 0.5 + (y - 0.5)*sin(pi/2*t) + (z - 0.5)*cos(pi/2*t)"
                      " - z");
+  }
+  /// Homogeneous uniaxial stretch: the bar [0,3] x [0,1] (x [0,1]) of the
+  /// model @p model (its own subsection's @p model_entries) on symmetry
+  /// rollers (x = 0, y = 0, z = 0), its end x = 3 moved to the stretch
+  /// @p l1 in 4 load steps, lateral faces free; direct solver, tight
+  /// tolerances. @p mixed: the mixed formulation.
+  inline std::string
+  rollered_bar_stretch(const int          dim,
+                       const std::string &model,
+                       const std::string &model_entries,
+                       const double       l1,
+                       const bool         mixed)
+  {
+    const bool three = dim == 3;
+    return subsection("Problem",
+                      entry("Dimension", std::to_string(dim)) +
+                        entry("Formulation",
+                              mixed ? "mixed" : "displacement")) +
+           subsection("Mesh",
+                      entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
+                        entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
+                        entry("Subdivisions", three ? "3, 1, 1" : "6, 2")) +
+           subsection("Material",
+                      entry("Model", model) +
+                        subsection(model, model_entries)) +
+           subsection("Loading", entry("Number of load steps", "4")) +
+           tight_solver("direct") + dirichlet(1, 0, "x", "0") +
+           dirichlet(2, 2, "y", "0") +
+           (three ? dirichlet(3, 4, "z", "0") : "") +
+           dirichlet(4, 1, "x", std::to_string(3. * (l1 - 1.)) + "*t") +
+           subsection("Output", entry("Write VTU", "false"));
   }
 } // namespace hyperelastic::testing

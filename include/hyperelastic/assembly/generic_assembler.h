@@ -9,6 +9,7 @@
 #include <deal.II/fe/mapping.h>
 
 #include <hyperelastic/assembly/assembler.h>
+#include <hyperelastic/assembly/point_materials.h>
 
 namespace hyperelastic
 {
@@ -49,5 +50,7 @@ namespace hyperelastic
     const Material<dim>           &material;
     /// Exact for P1 (one point) and for the linear-elastic stiffness of P2.
     const dealii::Quadrature<dim> quadrature;
+    /// The model at each quadrature point.
+    const PointMaterials<dim> materials;
   };
 } // namespace hyperelastic

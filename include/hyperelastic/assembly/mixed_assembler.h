@@ -29,6 +29,7 @@
 
 #include <hyperelastic/assembly/assembler.h>
 #include <hyperelastic/assembly/mixed_element.h>
+#include <hyperelastic/assembly/point_materials.h>
 #include <hyperelastic/materials/volumetric_split.h>
 
 #include <memory>
@@ -116,6 +117,8 @@ namespace hyperelastic
     std::unique_ptr<VolumetricSplit<dim>> split;
     const MixedElement                    element;
     const dealii::Quadrature<dim>         quadrature;
+    /// The isochoric part at each quadrature point.
+    const PointMaterials<dim> isochoric;
     /// 1/mu of the stabilisation (P1/P1).
     const double inverse_shear_modulus;
     /// MINI: the last converged bubble of each cell (dim values per active

@@ -21,6 +21,7 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <hyperelastic/assembly/assembler.h>
+#include <hyperelastic/assembly/point_materials.h>
 
 #include <array>
 #include <vector>
@@ -109,8 +110,10 @@ namespace hyperelastic
     void
     report(const std::string &error, unsigned int cell) const;
 
-    const dealii::DoFHandler<dim>  &dof_handler;
-    const Material<dim>            &material;
+    const dealii::DoFHandler<dim> &dof_handler;
+    const Material<dim>           &material;
+    /// The model at each cell (one point per P1 cell).
+    const PointMaterials<dim>       materials;
     dealii::IndexSet                relevant;
     std::vector<Cell>               cells;
     bool                            layout_ok   = false;

@@ -7,6 +7,7 @@
 // and parametrises them, is material_registry.h.
 #pragma once
 
+#include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
 #include <hyperelastic/materials/volumetric_split.h>
@@ -102,6 +103,26 @@ namespace hyperelastic
     /// formulation; null for a model without one.
     virtual std::unique_ptr<VolumetricSplit<dim>>
     volumetric_split() const
+    {
+      return nullptr;
+    }
+
+    /// True for a model whose constants vary with the reference position
+    /// (Holzapfel-Gasser-Ogden with fibre directions given as expressions
+    /// of x, y, z). The assemblers then build at_position() once per
+    /// quadrature point (assembly/point_materials.h); the other models cost
+    /// nothing extra.
+    virtual bool
+    depends_on_position() const
+    {
+      return false;
+    }
+
+    /// The model with its constants evaluated at the reference point @p X:
+    /// a pure function of F again. Only for depends_on_position() models;
+    /// the others return a null pointer.
+    virtual std::unique_ptr<Material<dim>>
+    at_position(const dealii::Point<dim> & /*X*/) const
     {
       return nullptr;
     }
