@@ -12,6 +12,11 @@ namespace
 {
   const char *usage =
     "Usage: mpirun -np N hyperelastic SCENE.prm\n"
+    "       mpirun -np N hyperelastic --restart CHECKPOINT SCENE.prm\n"
+    "                                          continue a run from the\n"
+    "                                          checkpoint its scene wrote\n"
+    "                                          (Output/Checkpoint every),\n"
+    "                                          on as many ranks\n"
     "       hyperelastic --print-parameters    every scene parameter with its\n"
     "                                          default and documentation\n"
     "       hyperelastic --help\n"
@@ -48,7 +53,9 @@ main(int argc, char *argv[])
         }
       return success;
     }
-  if (argc != 2 || argument.empty() || argument[0] == '-')
+  const bool        restart = argc == 4 && std::string(argv[1]) == "--restart";
+  const std::string scene   = restart ? argv[3] : argument;
+  if (!(argc == 2 || restart) || scene.empty() || scene[0] == '-')
     {
       if (root)
         std::cerr << usage;
@@ -58,7 +65,9 @@ main(int argc, char *argv[])
   return run_and_report(
     [&]() {
       Parameters parameters;
-      parameters.read(argument);
+      parameters.read(scene);
+      if (restart)
+        parameters.restart_checkpoint = argv[2];
       run_scene(parameters, comm);
     },
     comm);

@@ -157,6 +157,35 @@ namespace hyperelastic
               "does not work with stiffness warping (a linearization per "
               "step, not a path)");
       }
+    if (output.checkpoint_every > 0 &&
+        load_stepping.method == LoadControl::arc_length &&
+        !time_integration.dynamic())
+      reject("Output/Checkpoint every",
+             std::to_string(output.checkpoint_every),
+             "checkpoints continue load control or time stepping; 'Load "
+             "stepping/Method = arc length' is not supported");
+    // Viscoelasticity: the history is written at the solved state of a
+    // step of known length.
+    if (material.viscoelasticity.active())
+      {
+        const auto viscous = [&](const std::string &entry,
+                                 const std::string &value,
+                                 const std::string &why) {
+          reject(entry,
+                 value,
+                 "'Material/Viscoelasticity' (Weights = '" +
+                   material.viscoelasticity.weights_text + "') " + why);
+        };
+        if (load_stepping.method == LoadControl::arc_length)
+          viscous("Load stepping/Method",
+                  "arc length",
+                  "needs steps of known length (load control)");
+        if (time_integration.scheme_name() == "implicit midpoint")
+          viscous("Time integration/Scheme",
+                  "implicit midpoint",
+                  "needs a scheme that solves at the end of the step "
+                  "(backward Euler or Newmark)");
+      }
     // Accepting inverted equilibria needs a model defined at J <= 0.
     if (newton.inverted_elements == InvertedElements::warn)
       {

@@ -155,9 +155,21 @@ namespace hyperelastic
     linear_solver.set_symmetric(elasticity->is_conservative());
     formulation->configure_linear_solver(
       linear_solver, dof_handler, mapping, *material, pressure_dofs);
-    if (parameters.output.write_vtu)
+    const SurfaceFormat surface_format = parameters.output.surface_format;
+    if (parameters.output.write_vtu || surface_format == SurfaceFormat::ply)
       material3d = material->three_dimensional_twin();
-    writer = std::make_unique<OutputWriter<dim>>(parameters.output, comm);
+    if (!parameters.restart_checkpoint.empty())
+      read_checkpoint();
+    writer = std::make_unique<OutputWriter<dim>>(
+      parameters.output, comm, resume_point ? int(resume_point->step) : -1);
+    if (resume_point)
+      writer->resume_series(resumed_series);
+    if (surface_format != SurfaceFormat::none)
+      surface = std::make_unique<SurfaceWriter<dim>>(
+        dof_handler,
+        surface_format,
+        parameters.output.directory,
+        parameters.output.base_name);
     print_header();
   }
 
@@ -246,8 +258,7 @@ namespace hyperelastic
       s.more.push_back({"stability", result.stability});
 
     scope.stop();
-    if (parameters.output.write_vtu &&
-        stepping->writes_fields(step.step, s.load_factor))
+    if (writes_frames() && stepping->writes_fields(step.step, s.load_factor))
       write_fields(step.step);
     return s;
   }
@@ -257,8 +268,18 @@ namespace hyperelastic
   Problem<dim>::write_fields(const unsigned int step)
   {
     TimerOutput::Scope output_scope(timer, "output");
-    const CellFields   fields = compute_cell_fields(
-      dof_handler, mapping, *material, *material3d, system->solution());
+    CellFields         fields;
+    if (material3d)
+      fields = compute_cell_fields(
+        dof_handler, mapping, *material, *material3d, system->solution());
+    if (surface)
+      surface->write(n_frames,
+                     system->load_factor(),
+                     system->solution(),
+                     material3d ? &fields.von_mises : nullptr);
+    ++n_frames;
+    if (!parameters.output.write_vtu)
+      return;
     std::vector<typename OutputWriter<dim>::NodalField> nodal;
     if (const VectorType *velocity = stepping->output_velocity())
       nodal.push_back({"velocity", velocity});
@@ -330,7 +351,7 @@ namespace hyperelastic
   Problem<dim>::solve_all_load_steps()
   {
     setup();
-    if (parameters.output.write_vtu)
+    if (writes_frames() && !resume_point)
       write_fields(0);
 
     // Progress: the elapsed wall time, and the remaining time estimated
@@ -345,9 +366,14 @@ namespace hyperelastic
         : (along_path ? parameters.load_stepping.maximum_load_factor : 1.);
     const auto start = std::chrono::steady_clock::now();
     stepping->stepper(pcout).run(
-      newton, *system, [&](const LoadStep &step, const NewtonResult &result) {
+      newton,
+      *system,
+      [&](const LoadStep &step, const NewtonResult &result) {
         const StepSummary<dim> summary = summarize(step, result);
         writer->write_summary(summary.columns());
+        const unsigned int every = parameters.output.checkpoint_every;
+        if (every > 0 && step.step % every == 0)
+          write_checkpoint(step);
         step_summaries.push_back(summary);
         if (step_observer)
           step_observer(summary);
@@ -362,14 +388,18 @@ namespace hyperelastic
         const double elapsed = std::chrono::duration<double>(
                                  std::chrono::steady_clock::now() - start)
                                  .count();
-        const double done = step.load_factor / t_end;
+        // The fraction done since this run started (a restart: since the
+        // checkpoint).
+        const double t0   = resume_point ? resume_point->t : 0.;
+        const double done = (step.load_factor - t0) / (t_end - t0);
         pcout << "   progress: t = " << step.load_factor << " of " << t_end
               << ", " << std::fixed << std::setprecision(1) << elapsed
               << " s elapsed";
         if (!along_path && done > 0. && done < 1.)
           pcout << ", about " << elapsed * (1. - done) / done << " s to go";
         pcout << std::defaultfloat << std::setprecision(6) << std::endl;
-      });
+      },
+      resume_point.get());
     if (self_contact)
       {
         // Where self-contact's time went (rank 0; the timing table below

@@ -139,6 +139,17 @@ namespace hyperelastic
     void
     restore_converged_state() override;
 
+    /// What a restart needs (a checkpoint): the last converged state and
+    /// the one before it (the secant predictor's), the driver's state and
+    /// the materials' history.
+    void
+    save_state(StateBlob &blob) const;
+
+    /// Restores what save_state() wrote: the system is then at the
+    /// checkpoint's converged state. Collective.
+    void
+    load_state(StateBlob &blob);
+
     // ContinuationSystem
     void
     set_state(const VectorType &u, double t) override;

@@ -34,6 +34,9 @@ namespace hyperelastic
     ContactParameters         contact;
     LinearSolverParameters    linear_solver;
     OutputParameters          output;
+    /// `hyperelastic --restart CHECKPOINT scene.prm`: the checkpoint the
+    /// run continues from (not a scene entry; empty: from the start).
+    std::string restart_checkpoint;
 
     static void
     declare(ParameterHandler &prm);

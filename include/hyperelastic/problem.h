@@ -24,6 +24,7 @@
 #include <hyperelastic/output/output.h>
 #include <hyperelastic/output/step_postprocessor.h>
 #include <hyperelastic/output/step_summary.h>
+#include <hyperelastic/output/surface_writer.h>
 #include <hyperelastic/parameters.h>
 #include <hyperelastic/solvers/linear_solver.h>
 #include <hyperelastic/solvers/load_stepping.h>
@@ -144,8 +145,30 @@ namespace hyperelastic
     print_header() const;
     StepSummary<dim>
     summarize(const LoadStep &step, const NewtonResult &newton_result);
+    /// Whether output frames are written (VTU or a surface sequence).
+    bool
+    writes_frames() const
+    {
+      return parameters.output.write_vtu || surface != nullptr;
+    }
+    /// One output frame: the VTU files of load step @p step and the
+    /// surface file, as the scene asks.
     void
     write_fields(unsigned int step);
+
+    // Checkpoint and restart (problem_checkpoint.cc).
+    /// What must match between a checkpoint and the scene that resumes
+    /// it, one "name: value" per line.
+    std::string
+    checkpoint_description() const;
+    /// Writes the checkpoint after converged step @p step.
+    void
+    write_checkpoint(const LoadStep &step);
+    /// Reads the checkpoint of 'restart_checkpoint' into the system, the
+    /// solver's counts and the output state; sets resume_point. Before the
+    /// output writer exists.
+    void
+    read_checkpoint();
 
     const Parameters           parameters;
     const MPI_Comm             comm;
@@ -176,6 +199,14 @@ namespace hyperelastic
     SelfContact<dim> *self_contact = nullptr;
     std::unique_ptr<StepPostprocessor<dim>> postprocessor;
     std::unique_ptr<OutputWriter<dim>>      writer;
+    /// 'Output/Surface format' (null for none).
+    std::unique_ptr<SurfaceWriter<dim>> surface;
+    /// Output frames written so far (the next surface file's number).
+    unsigned int n_frames = 0;
+    /// A restart: where the steps resume, the CSV rows and PVD entries to
+    /// keep (null: from the start).
+    std::unique_ptr<ResumePoint>                resume_point;
+    std::vector<std::pair<double, std::string>> resumed_series;
     LinearSolver                            linear_solver;
     NewtonSolver                            newton;
 

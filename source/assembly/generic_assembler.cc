@@ -194,6 +194,24 @@ namespace hyperelastic
                                     dof_handler.get_communicator());
   }
 
+  template <int dim>
+  void
+  GenericAssembler<dim>::begin_step(const double dt)
+  {
+    materials.begin_step(dt);
+  }
+
+  template <int dim>
+  void
+  GenericAssembler<dim>::accept_step(const VectorType &u)
+  {
+    if (materials.has_history())
+      for_each_cell(u, [&](CellData &data) {
+        for (unsigned int q = 0; q < data.F.size(); ++q)
+          materials.accept_step(data.cell, q, data.F[q]);
+      });
+  }
+
   template class GenericAssembler<2>;
   template class GenericAssembler<3>;
 } // namespace hyperelastic

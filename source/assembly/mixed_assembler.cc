@@ -95,6 +95,19 @@ namespace hyperelastic
         }
     }
 
+    /// F = I + grad u at point @p q from the cell's values and bubble.
+    Tensor<2, dim>
+    deformation_gradient(const unsigned int q) const
+    {
+      Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+      for (unsigned int i = 0; i < n; ++i)
+        if (component[i] < dim)
+          F[component[i]] += x[i] * grad[q][i];
+      for (unsigned int b = 0; b < n_bubble; ++b)
+        F[b] += bubble[b] * grad[q][n + b];
+      return F;
+    }
+
     FEValues<dim>                        values;
     const unsigned int                   n;
     const unsigned int                   n_bubble;
@@ -170,17 +183,13 @@ namespace hyperelastic
     std::vector<double> p_q(quadrature.size());
     for (unsigned int q = 0; q < quadrature.size(); ++q)
       {
-        const auto    &grad = data.grad[q];
-        const auto    &psi  = data.psi[q];
-        Tensor<2, dim> F    = unit_symmetric_tensor<dim>();
-        double         p    = 0.;
+        const auto          &grad = data.grad[q];
+        const auto          &psi  = data.psi[q];
+        const Tensor<2, dim> F    = data.deformation_gradient(q);
+        double               p    = 0.;
         for (unsigned int i = 0; i < data.n; ++i)
-          if (data.component[i] < dim)
-            F[data.component[i]] += data.x[i] * grad[i];
-          else
+          if (data.component[i] == dim)
             p += data.x[i] * psi[i];
-        for (unsigned int b = 0; b < data.n_bubble; ++b)
-          F[b] += data.bubble[b] * grad[data.n + b];
         p_q[q]           = p;
         const double JxW = data.values.JxW(q);
         volume += JxW;
@@ -489,6 +498,25 @@ namespace hyperelastic
     });
     return reduce_energy_evaluation(
       min_J, with_energy, energy, magnitude, dof_handler.get_communicator());
+  }
+
+  template <int dim>
+  void
+  MixedAssembler<dim>::begin_step(const double dt)
+  {
+    isochoric.begin_step(dt);
+  }
+
+  template <int dim>
+  void
+  MixedAssembler<dim>::accept_step(const VectorType &u)
+  {
+    if (!isochoric.has_history())
+      return;
+    for_each_cell(u, false, TangentProjection::none, [&](CellData &data) {
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        isochoric.accept_step(data.cell_index, q, data.deformation_gradient(q));
+    });
   }
 
   template class MixedAssembler<2>;

@@ -468,6 +468,24 @@ namespace hyperelastic
                                     dof_handler.get_communicator());
   }
 
+  template <int dim>
+  void
+  P1Assembler<dim>::begin_step(const double dt)
+  {
+    materials.begin_step(dt);
+  }
+
+  template <int dim>
+  void
+  P1Assembler<dim>::accept_step(const VectorType &u)
+  {
+    if (!materials.has_history())
+      return;
+    const double *U = ghosted_values(u);
+    for (const Cell &c : cells)
+      materials.accept_step(c.active_index, 0, deformation_gradient(c, U));
+  }
+
   template class P1Assembler<2>;
   template class P1Assembler<3>;
 } // namespace hyperelastic

@@ -106,6 +106,8 @@ namespace hyperelastic
     // it: implicit midpoint solves half way.
     const double solved = integrator->evaluation_time(converged.load_factor, t);
     context.elasticity.set_end_state_map(h / (solved - converged.load_factor));
+    // A model with history (viscoelasticity): the step lasts h.
+    context.elasticity.begin_material_step(h);
     return solved;
   }
 
@@ -134,6 +136,7 @@ namespace hyperelastic
     velocity.swap(new_velocity);
     acceleration.swap(new_acceleration);
     velocity_ghosted = velocity;
+    context.elasticity.accept_material_step(u_ghosted);
     return step_end_time;
   }
 

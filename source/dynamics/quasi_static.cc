@@ -32,6 +32,11 @@ namespace hyperelastic
     if (context.parameters.load_stepping.secant_predictor && previous.valid &&
         !context.material.is_linear())
       predict(t, converged, previous, u, u_ghosted);
+    // A model with history (viscoelasticity): the step lasts its increment
+    // times the scene's quasi-static duration.
+    context.elasticity.begin_material_step(
+      (t - converged.load_factor) *
+      context.parameters.material.viscoelasticity.quasi_static_duration);
     return t;
   }
 

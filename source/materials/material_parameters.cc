@@ -5,6 +5,7 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/materials/material_parameters.h>
+#include <hyperelastic/materials/viscoelasticity.h>
 
 #include <algorithm>
 #include <cmath>
@@ -97,6 +98,9 @@ namespace hyperelastic
           m.declare_entries(prm);
           prm.leave_subsection();
         }
+    prm.enter_subsection("Viscoelasticity");
+    ViscoelasticParameters::declare(prm);
+    prm.leave_subsection();
     prm.leave_subsection();
   }
 
@@ -104,13 +108,29 @@ namespace hyperelastic
   MaterialParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    model             = prm.get("Model");
-    stiffness_warping = model == stiffness_warping_name;
+    model                           = prm.get("Model");
+    stiffness_warping               = model == stiffness_warping_name;
     const MaterialModel &registered = material_model(registered_model());
     elastic_constants               = LameParameters();
     if (registered.uses_elastic_constants)
       parse_elastic_constants(prm, elastic_constants);
     factory = registered.parse(prm, elastic_constants);
+    prm.enter_subsection("Viscoelasticity");
+    viscoelasticity.parse(prm);
+    prm.leave_subsection();
+    if (viscoelasticity.active())
+      {
+        if (!registered.has_volumetric_split || stiffness_warping)
+          reject("Material/Viscoelasticity/Weights",
+                 viscoelasticity.weights_text,
+                 "viscoelasticity acts on the isochoric stress of a model "
+                 "with a volumetric-isochoric split (decoupled neo-Hookean, "
+                 "Mooney-Rivlin, Yeoh, Gent, Arruda-Boyce, Ogden, "
+                 "Holzapfel-Gasser-Ogden); the " +
+                   model + " model has none");
+        factory = MaterialFactory::of<Viscoelastic>(
+          ViscoelasticConstants{factory, viscoelasticity});
+      }
     // Which entry, if any, makes the material exactly incompressible.
     incompressible_entry.clear();
     if (std::isinf(factory.create<3>()->small_strain_moduli().lambda))
@@ -190,5 +210,65 @@ namespace hyperelastic
                  "must lie strictly between -1 and 0.5");
         lame = LameParameters::from_young_poisson(E, nu);
       }
+  }
+} // namespace hyperelastic
+
+namespace hyperelastic
+{
+  void
+  ViscoelasticParameters::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Weights",
+      "",
+      List(Double(0), 0, 3),
+      "beta_j >= 0 of up to three relaxation processes (a Prony series, "
+      "Simo 1987): the instantaneous isochoric stiffness is (1 + sum beta_j) "
+      "times the long-term one of the model. Empty (the default): elastic.");
+    prm.declare_entry("Relaxation times",
+                      "",
+                      List(Double(0), 0, 3),
+                      "tau_j > 0, one per weight, in the scene's time unit.");
+    prm.declare_entry(
+      "Quasi-static duration",
+      "1",
+      Double(0),
+      "The physical time a quasi-static scene takes for the load factor to "
+      "go from 0 to 1: a load step of increment dt lasts this times dt "
+      "(implicit dynamics uses its own time step).");
+  }
+
+  void
+  ViscoelasticParameters::parse(ParameterHandler &prm)
+  {
+    const auto numbers = [&](const std::string &name) {
+      std::vector<double> values;
+      for (const std::string &x :
+           dealii::Utilities::split_string_list(prm.get(name)))
+        values.push_back(dealii::Utilities::string_to_double(x));
+      return values;
+    };
+    weights                   = numbers("Weights");
+    weights_text              = prm.get("Weights");
+    relaxation_times          = numbers("Relaxation times");
+    quasi_static_duration     = prm.get_double("Quasi-static duration");
+    const std::string section = "Material/Viscoelasticity/";
+    if (relaxation_times.size() != weights.size())
+      reject(section + "Relaxation times",
+             prm.get("Relaxation times"),
+             "needs one time per weight ('Weights' = '" + prm.get("Weights") +
+               "')");
+    for (const double tau : relaxation_times)
+      if (!(tau > 0.) || !std::isfinite(tau))
+        reject(section + "Relaxation times",
+               prm.get("Relaxation times"),
+               "every time must be positive and finite");
+    for (const double beta : weights)
+      if (!std::isfinite(beta))
+        reject(section + "Weights", prm.get("Weights"), "must be finite");
+    if (!(quasi_static_duration > 0.) || !std::isfinite(quasi_static_duration))
+      reject(section + "Quasi-static duration",
+             prm.get("Quasi-static duration"),
+             "must be positive and finite");
   }
 } // namespace hyperelastic

@@ -8,7 +8,10 @@
 #include <hyperelastic/output/output.h>
 
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
+#include <string>
+#include <vector>
 
 namespace hyperelastic
 {
@@ -16,7 +19,8 @@ namespace hyperelastic
 
   template <int dim>
   OutputWriter<dim>::OutputWriter(const OutputParameters &parameters,
-                                  const MPI_Comm          comm)
+                                  const MPI_Comm          comm,
+                                  const int               resumed_rows)
       : parameters(parameters)
       , comm(comm)
   {
@@ -28,11 +32,40 @@ namespace hyperelastic
         if (ec)
           error = "cannot create output folder '" + parameters.directory +
                   "' (Output/Directory): " + ec.message();
-        else
+        else if (resumed_rows < 0)
           {
             csv.open(csv_file());
             if (!csv)
               error = "cannot write '" + csv_file() + "' (Output/Directory)";
+          }
+        else
+          {
+            // The header and the checkpointed steps' rows; rows of steps
+            // after the checkpoint (a run that went on and then stopped)
+            // go, the resumed run writes them again.
+            std::ifstream            in(csv_file());
+            std::vector<std::string> lines;
+            for (std::string line;
+                 lines.size() < std::size_t(resumed_rows) + 1 &&
+                 std::getline(in, line);)
+              lines.push_back(line);
+            in.close();
+            if (lines.size() < std::size_t(resumed_rows) + 1)
+              error = "cannot restart the summary '" + csv_file() +
+                      "': it has " +
+                      std::to_string(lines.empty() ? 0 : lines.size() - 1) +
+                      " rows, the checkpoint " +
+                      std::to_string(resumed_rows);
+            else
+              {
+                csv.open(csv_file(), std::ios::trunc);
+                for (const std::string &line : lines)
+                  csv << line << '\n';
+                csv.flush();
+                if (!csv)
+                  error =
+                    "cannot write '" + csv_file() + "' (Output/Directory)";
+              }
           }
       }
     error = Utilities::MPI::broadcast(comm, error, 0);
@@ -128,9 +161,16 @@ namespace hyperelastic
     pvd_entries.emplace_back(load_factor, pvtu);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
-        std::ofstream pvd(parameters.directory + "/" + parameters.base_name +
-                          ".pvd");
-        DataOutBase::write_pvd_record(pvd, pvd_entries);
+        // Written then renamed: a run killed meanwhile leaves the last
+        // complete series.
+        const std::string pvd_file =
+          parameters.directory + "/" + parameters.base_name + ".pvd";
+        {
+          std::ofstream pvd(pvd_file + ".partial");
+          DataOutBase::write_pvd_record(pvd, pvd_entries);
+        }
+        std::error_code ec;
+        std::filesystem::rename(pvd_file + ".partial", pvd_file, ec);
       }
   }
 

@@ -33,6 +33,32 @@ namespace hyperelastic
                       Bool(),
                       "Write the ParaView files at every load step (the CSV "
                       "summary is always written).");
+    prm.declare_entry(
+      "Surface format",
+      "none",
+      Selection("none|obj|ply"),
+      "The deformed surface for animation tools (Blender and most "
+      "pipelines import OBJ or PLY sequences), one file per output frame: "
+      "<base>_surface_NNNN.obj or .ply (NNNN = 0000 for the initial state, "
+      "then one per output step, like the PVD's entries), written whether "
+      "or not 'Write VTU' is set. 3D: the boundary triangles, oriented "
+      "outward; 2D: the body's triangles in the plane z = 0. The same "
+      "vertex order in every frame and for any number of ranks (the "
+      "reference coordinates' lexicographic order). PLY adds the von Mises "
+      "stress per vertex (the average over the cells of its faces).");
+    prm.declare_entry(
+      "Checkpoint every",
+      "0",
+      Integer(0),
+      "Every this many converged load or time steps, write the state a "
+      "restart needs to <base>.checkpoint (displacement, velocity and "
+      "acceleration, pressure, history variables, load factor or time, step "
+      "size and stepping state), replacing the previous one atomically (it "
+      "is kept as <base>.checkpoint.previous until the new one is "
+      "complete). `hyperelastic --restart <base>.checkpoint scene.prm` "
+      "continues the run, the CSV and the PVD where the checkpoint was "
+      "written, on the same number of MPI ranks; the scene may run further "
+      "(a later End time). 0: no checkpoints.");
     prm.declare_entry("Verbose",
                       "true",
                       Bool(),
@@ -59,6 +85,11 @@ namespace hyperelastic
     base_name = dealii::Utilities::trim(prm.get("Base name"));
     write_vtu = prm.get_bool("Write VTU");
     verbose   = prm.get_bool("Verbose");
+    checkpoint_every = prm.get_integer("Checkpoint every");
+    const std::string surface = prm.get("Surface format");
+    surface_format = surface == "obj"   ? SurfaceFormat::obj
+                     : surface == "ply" ? SurfaceFormat::ply
+                                        : SurfaceFormat::none;
     if (directory.empty())
       reject("Output/Directory", "", "must not be empty");
     if (base_name.empty() || base_name.find('/') != std::string::npos)

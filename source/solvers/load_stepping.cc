@@ -47,13 +47,14 @@ namespace hyperelastic
     const NewtonSolver &newton,
     SteppedSystem      &system,
     const std::function<void(const LoadStep &, const NewtonResult &)>
-      &on_converged) const
+                      &on_converged,
+    const ResumePoint *resume) const
   {
     if (parameters.method == LoadControl::arc_length && label == "Load step")
       ArcLengthStepper(parameters, newton.settings(), nominal, pcout)
         .run(system, on_converged);
     else
-      run_load_control(newton, system, on_converged);
+      run_load_control(newton, system, on_converged, resume);
   }
 
   double
@@ -110,13 +111,24 @@ namespace hyperelastic
     const NewtonSolver &newton,
     SteppedSystem      &system,
     const std::function<void(const LoadStep &, const NewtonResult &)>
-      &on_converged) const
+                      &on_converged,
+    const ResumePoint *resume) const
   {
     double       t         = 0.;
     double       increment = nominal;
     LoadStep     step;
     unsigned int easy_steps_in_a_row = 0;
-    system.store_converged_state();
+    if (resume)
+      {
+        // The system holds the converged state of t already; a scene with
+        // more nominal steps than the checkpointed one steps finer.
+        t                   = resume->t;
+        increment           = std::min(resume->increment, nominal);
+        step.step           = resume->step;
+        easy_steps_in_a_row = resume->easy_steps;
+      }
+    else
+      system.store_converged_state();
     while (t < end)
       {
         // Land exactly on t = end (no sliver of a last step).
@@ -171,8 +183,6 @@ namespace hyperelastic
         step.increment   = t_next - t;
         t                = t_next;
         system.store_converged_state();
-        on_converged(step, result);
-        step.cut_backs = 0;
 
         // Grow back towards the nominal increment after two easy steps in a
         // row (one alone often follows a cut-back by luck).
@@ -185,6 +195,10 @@ namespace hyperelastic
             increment           = std::min(2. * increment, nominal);
             easy_steps_in_a_row = 0;
           }
+        step.next_increment = increment;
+        step.easy_steps     = easy_steps_in_a_row;
+        on_converged(step, result);
+        step.cut_backs = 0;
       }
   }
 } // namespace hyperelastic

@@ -49,5 +49,35 @@ namespace hyperelastic
     {
       return true;
     }
+
+    /// A model with history (Material::has_history()): the next step
+    /// (each attempt of it) lasts @p dt from the last accepted state.
+    virtual void
+    begin_step(const double dt)
+    {
+      (void)dt;
+    }
+
+    /// A model with history: the step ended at @p u (ghosted); every
+    /// quadrature point writes its new state.
+    virtual void
+    accept_step(const VectorType &u)
+    {
+      (void)u;
+    }
+
+    /// A model with history: appends the quadrature points' history to
+    /// @p state (a checkpoint); load_history() reads it back.
+    virtual void
+    save_history(std::vector<double> &state) const
+    {
+      (void)state;
+    }
+
+    virtual void
+    load_history(const std::vector<double> &state, std::size_t &position)
+    {
+      (void)state, (void)position;
+    }
   };
 } // namespace hyperelastic

@@ -47,6 +47,46 @@ namespace hyperelastic
       return p1 != nullptr;
     }
 
+    /// A model with history (viscoelasticity): the next step (each attempt
+    /// of it) lasts the physical time @p dt from the last accepted state.
+    void
+    begin_material_step(const double dt)
+    {
+      generic->begin_step(dt);
+      if (p1)
+        p1->begin_step(dt);
+    }
+
+    /// A model with history: the step ended at @p u (ghosted).
+    void
+    accept_material_step(const VectorType &u)
+    {
+      generic->accept_step(u);
+      if (p1)
+        p1->accept_step(u);
+    }
+
+    /// A model with history: the quadrature points' state (a checkpoint).
+    std::vector<double>
+    material_history() const
+    {
+      std::vector<double> state;
+      generic->save_history(state);
+      if (p1)
+        p1->save_history(state);
+      return state;
+    }
+
+    /// Restores what material_history() gave.
+    void
+    restore_material_history(const std::vector<double> &state)
+    {
+      std::size_t position = 0;
+      generic->load_history(state, position);
+      if (p1)
+        p1->load_history(state, position);
+    }
+
     /// Whether the material part and every load term have a potential: then
     /// the total potential energy exists, Newton's line search can use it,
     /// and the tangent is symmetric.

@@ -1,10 +1,12 @@
 // The model at every quadrature point, for the models whose constants vary
 // with the reference position (Material::depends_on_position():
 // Holzapfel-Gasser-Ogden with fibre directions given as expressions of x, y,
-// z). Built once, at the assembler's set-up, with the assembler's own
-// quadrature, so that assembly evaluates a pure function of F at each point
-// and never an expression. For every other model nothing is stored and the
-// scene's model is handed out: a scene pays only for the feature it uses.
+// z) and for those with history (Material::has_history(): viscoelasticity,
+// whose state each point holds). Built once, at the assembler's set-up, with
+// the assembler's own quadrature, so that assembly evaluates a pure function
+// of F at each point and never an expression. For every other model nothing
+// is stored and the scene's model is handed out: a scene pays only for the
+// feature it uses.
 #pragma once
 
 #include <deal.II/base/mpi.h>
@@ -35,7 +37,7 @@ namespace hyperelastic
         : model(model)
         , n_points(quadrature.size())
     {
-      if (!model.depends_on_position())
+      if (!per_point(model))
         return;
       dealii::FEValues<dim> values(mapping,
                                    dof_handler.get_fe(),
@@ -58,7 +60,7 @@ namespace hyperelastic
         : model(model)
         , n_points(1)
     {
-      if (!model.depends_on_position())
+      if (!per_point(model))
         return;
       points.resize(dof_handler.get_triangulation().n_active_cells());
       collectively(dof_handler, [&](const auto &cell) {
@@ -74,7 +76,59 @@ namespace hyperelastic
       return points.empty() ? model : *points[cell * n_points + q];
     }
 
+    /// Whether the points hold history (Material::has_history()).
+    bool
+    has_history() const
+    {
+      return !points.empty() && model.has_history();
+    }
+
+    /// Every point's next step lasts @p dt (Material::begin_step()).
+    void
+    begin_step(const double dt) const
+    {
+      for (const auto &point : points)
+        if (point)
+          point->begin_step(dt);
+    }
+
+    /// The step ended with @p F at point @p q of cell @p cell.
+    void
+    accept_step(const unsigned int    cell,
+                const unsigned int    q,
+                const Tensor<2, dim> &F) const
+    {
+      points[cell * n_points + q]->accept_step(F);
+    }
+
+    /// Appends every point's history to @p state (points in their order:
+    /// the same on a restart with the same mesh and ranks).
+    void
+    save_history(std::vector<double> &state) const
+    {
+      if (has_history())
+        for (const auto &point : points)
+          if (point)
+            point->save_history(state);
+    }
+
+    /// Every point's history from @p state at @p position.
+    void
+    load_history(const std::vector<double> &state, std::size_t &position) const
+    {
+      if (has_history())
+        for (const auto &point : points)
+          if (point)
+            point->load_history(state, position);
+    }
+
   private:
+    static bool
+    per_point(const Material<dim> &model)
+    {
+      return model.depends_on_position() || model.has_history();
+    }
+
     /// Calls @p build(cell) on every cell this rank sees; an input error
     /// (a fibre direction that vanishes at a point) on any rank is thrown
     /// on every rank with the message of the lowest such rank, so no rank

@@ -67,6 +67,21 @@ namespace hyperelastic
       return &velocity_ghosted;
     }
 
+    void
+    save_state(StateBlob &blob) const override
+    {
+      blob.put_owned(velocity);
+      blob.put_owned(acceleration);
+    }
+
+    void
+    load_state(StateBlob &blob) override
+    {
+      blob.get_owned(velocity);
+      blob.get_owned(acceleration);
+      velocity_ghosted = velocity;
+    }
+
   private:
     const SteppingContext<dim>       context;
     const TimeIntegrationParameters &parameters;

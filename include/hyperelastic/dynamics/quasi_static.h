@@ -38,8 +38,10 @@ namespace hyperelastic
     accept_step(double solved,
                 const ConvergedState &,
                 VectorType &,
-                VectorType &) override
+                VectorType &u_ghosted) override
     {
+      // A model with history writes the accepted state.
+      context.elasticity.accept_material_step(u_ghosted);
       return solved;
     }
 

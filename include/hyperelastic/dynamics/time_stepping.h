@@ -14,6 +14,7 @@
 #include <hyperelastic/assembly/elasticity_operator.h>
 #include <hyperelastic/base/linear_algebra.h>
 #include <hyperelastic/materials/material.h>
+#include <hyperelastic/output/checkpoint_file.h>
 #include <hyperelastic/output/step_summary.h>
 #include <hyperelastic/parameters.h>
 #include <hyperelastic/solvers/load_stepping.h>
@@ -127,6 +128,21 @@ namespace hyperelastic
     n_predictions() const
     {
       return 0;
+    }
+
+    /// The driver's state beyond the displacement (a checkpoint): the
+    /// velocity and acceleration in dynamics.
+    virtual void
+    save_state(StateBlob &blob) const
+    {
+      (void)blob;
+    }
+
+    /// Restores what save_state() wrote.
+    virtual void
+    load_state(StateBlob &blob)
+    {
+      (void)blob;
     }
   };
 

@@ -14,6 +14,7 @@
 
 #include <limits>
 #include <memory>
+#include <vector>
 #include <string>
 
 namespace hyperelastic
@@ -125,6 +126,45 @@ namespace hyperelastic
     at_position(const dealii::Point<dim> & /*X*/) const
     {
       return nullptr;
+    }
+
+    /// True for a model with history (viscoelasticity): each quadrature
+    /// point then holds its own copy (at_position()), whose state is
+    /// frozen during a step and written only when the step is accepted.
+    virtual bool
+    has_history() const
+    {
+      return false;
+    }
+
+    /// A point copy with history: the next step (every attempt of it) has
+    /// length @p dt from the last accepted state; a rejected attempt thus
+    /// leaves no trace. Within the step the model is a pure function of F.
+    virtual void
+    begin_step(const double /*dt*/)
+    {
+    }
+
+    /// A point copy with history: the step ended at @p F; its state
+    /// becomes the last accepted one.
+    virtual void
+    accept_step(const Tensor<2, dim> & /*F*/)
+    {
+    }
+
+    /// A point copy with history: appends its last accepted state to
+    /// @p state (a checkpoint).
+    virtual void
+    save_history(std::vector<double> & /*state*/) const
+    {
+    }
+
+    /// A point copy with history: its last accepted state from
+    /// @p state at @p position (moved past it), as save_history() wrote it.
+    virtual void
+    load_history(const std::vector<double> & /*state*/,
+                 std::size_t & /*position*/)
+    {
     }
 
   protected:

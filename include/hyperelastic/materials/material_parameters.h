@@ -9,6 +9,7 @@
 
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/materials/material_registry.h>
+#include <hyperelastic/materials/viscoelasticity.h>
 
 #include <memory>
 #include <string>
@@ -25,7 +26,7 @@ namespace hyperelastic
     /// not a function of F, so not in the registry; the Material object is
     /// then the corotational model with the same constants (rest moduli,
     /// reported energy and cell stresses).
-    bool stiffness_warping = false;
+    bool                         stiffness_warping      = false;
     static constexpr const char *stiffness_warping_name = "stiffness warping";
 
     /// The registered model behind the scene's (the model itself, or
@@ -41,6 +42,9 @@ namespace hyperelastic
     LameParameters elastic_constants;
     /// The model with the scene's constants, for either dimension.
     MaterialFactory factory;
+    /// Material/Viscoelasticity (the factory then makes the viscoelastic
+    /// model around the registered one).
+    ViscoelasticParameters viscoelasticity;
     /// The entry (and its value) that makes the material exactly
     /// incompressible (a bulk modulus 'inf', Poisson's ratio 0.5); empty if
     /// none. Only the mixed formulation accepts it.

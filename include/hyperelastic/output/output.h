@@ -23,7 +23,12 @@ namespace hyperelastic
   {
   public:
     /// Creates the output folder (collective; InputError if impossible).
-    OutputWriter(const OutputParameters &parameters, MPI_Comm comm);
+    /// @p resumed_rows: a restart keeps the CSV's header and its first
+    /// resumed_rows rows (those of the checkpointed steps) and appends;
+    /// negative: a new CSV.
+    OutputWriter(const OutputParameters &parameters,
+                 MPI_Comm                comm,
+                 int                     resumed_rows = -1);
 
     /// A vector field on the nodes besides the displacement ("velocity"
     /// in dynamics, "contact_force" with contact), ghosted.
@@ -55,6 +60,20 @@ namespace hyperelastic
     /// The .pvtu file of output step @p step.
     std::string
     pvtu_file(unsigned int step) const;
+
+    /// The PVD's entries so far (time, .pvtu file), for a checkpoint.
+    const std::vector<std::pair<double, std::string>> &
+    series() const
+    {
+      return pvd_entries;
+    }
+
+    /// A restart: the PVD continues from @p entries.
+    void
+    resume_series(std::vector<std::pair<double, std::string>> entries)
+    {
+      pvd_entries = std::move(entries);
+    }
 
   private:
     const OutputParameters                      parameters;

@@ -12,12 +12,31 @@ namespace hyperelastic
 {
   using dealii::ParameterHandler;
 
+  /// 'Output/Surface format': the deformed surface per output frame for
+  /// animation tools (output/surface_writer.h), or none.
+  enum class SurfaceFormat
+  {
+    none,
+    obj,
+    ply
+  };
+
   struct OutputParameters
   {
     std::string directory = "output";
     std::string base_name = "solution";
     bool        write_vtu = true;
     bool        verbose   = true;
+    SurfaceFormat surface_format = SurfaceFormat::none;
+    /// 'Checkpoint every': steps between checkpoints (0: none).
+    unsigned int checkpoint_every = 0;
+
+    /// <Directory>/<Base name>.checkpoint.
+    std::string
+    checkpoint_file() const
+    {
+      return directory + "/" + base_name + ".checkpoint";
+    }
     /// Reference points at which the displacement is reported every load
     /// step ("Points"): each 2 or 3 coordinates as written (the number is
     /// checked against the dimension at setup).

@@ -92,6 +92,22 @@ namespace hyperelastic
       return n_refreshes;
     }
 
+    /// Forgets the hierarchy: the next prepare() builds one anew. At a
+    /// checkpoint, so that the run and a restart from it solve alike.
+    void
+    forget_preconditioner()
+    {
+      amg_built = false;
+    }
+
+    /// The counts above, as a checkpoint recorded them.
+    void
+    set_setup_counts(const unsigned int setups, const unsigned int refreshes)
+    {
+      n_setups    = setups;
+      n_refreshes = refreshes;
+    }
+
   private:
     const LinearSolverParameters               parameters;
     std::vector<double>                        null_space;

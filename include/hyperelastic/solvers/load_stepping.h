@@ -95,6 +95,19 @@ namespace hyperelastic
     /// Failed attempts (each followed by halving the increment) before this
     /// step converged.
     unsigned int cut_backs = 0;
+    /// The stepper's state after this step (a checkpoint resumes from it).
+    double       next_increment = 0.;
+    unsigned int easy_steps     = 0; ///< easy steps in a row
+  };
+
+  /// Where a resumed run starts (a restart from a checkpoint): the system
+  /// already holds that converged state.
+  struct ResumePoint
+  {
+    double       t          = 0.;
+    double       increment  = 0.;
+    unsigned int step       = 0;
+    unsigned int easy_steps = 0;
   };
 
   class LoadStepper
@@ -115,11 +128,13 @@ namespace hyperelastic
     /// step. Throws ConvergenceFailure (with the last failure's reason) when
     /// the increment would fall below the minimum, or at the first failure
     /// if adaptive stepping is off.
+    /// @p resume: continue from there instead of t = 0 (load control only).
     void
     run(const NewtonSolver &newton,
         SteppedSystem      &system,
         const std::function<void(const LoadStep &, const NewtonResult &)>
-          &on_converged) const;
+                          &on_converged,
+        const ResumePoint *resume = nullptr) const;
 
   private:
     /// Load control: the loop over t with cut-backs.
@@ -128,7 +143,8 @@ namespace hyperelastic
       const NewtonSolver &newton,
       SteppedSystem      &system,
       const std::function<void(const LoadStep &, const NewtonResult &)>
-        &on_converged) const;
+                        &on_converged,
+      const ResumePoint *resume) const;
 
     /// Load control gave up after the step from @p t failed: if the
     /// tangent's stiffness along the path (stiffness_along_path()) at the
