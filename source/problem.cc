@@ -156,14 +156,18 @@ namespace hyperelastic
     formulation->configure_linear_solver(
       linear_solver, dof_handler, mapping, *material, pressure_dofs);
     const SurfaceFormat surface_format = parameters.output.surface_format;
-    if (parameters.output.write_vtu || surface_format == SurfaceFormat::ply)
+    if (parameters.output.write_vtu || parameters.output.write_hdf5 ||
+        surface_format == SurfaceFormat::ply)
       material3d = material->three_dimensional_twin();
     if (!parameters.restart_checkpoint.empty())
       read_checkpoint();
     writer = std::make_unique<OutputWriter<dim>>(
       parameters.output, comm, resume_point ? int(resume_point->step) : -1);
     if (resume_point)
-      writer->resume_series(resumed_series);
+      {
+        writer->resume_series(resumed_series);
+        writer->resume_xdmf_entries(resumed_xdmf);
+      }
     if (surface_format != SurfaceFormat::none)
       surface = std::make_unique<SurfaceWriter<dim>>(
         dof_handler,
@@ -278,7 +282,7 @@ namespace hyperelastic
                      system->solution(),
                      material3d ? &fields.von_mises : nullptr);
     ++n_frames;
-    if (!parameters.output.write_vtu)
+    if (!parameters.output.write_vtu && !parameters.output.write_hdf5)
       return;
     std::vector<typename OutputWriter<dim>::NodalField> nodal;
     if (const VectorType *velocity = stepping->output_velocity())

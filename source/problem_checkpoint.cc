@@ -4,7 +4,7 @@
 //   common part: what must match the resuming scene (mesh, unknowns,
 //     element, model, formulation, scheme, ranks), the stepper's state
 //     after the step (t, next increment, step count, easy steps in a row),
-//     the output frames and PVD entries, the AMG set-up counts;
+//     the output frames, PVD and XDMF entries, the AMG set-up counts;
 //   each rank's part: EquilibriumSystem::save_state() (the last converged
 //     state and the one before it, velocity and acceleration, history).
 // The AMG hierarchy cannot be stored: at each checkpoint the run forgets
@@ -58,6 +58,7 @@ namespace hyperelastic
         common.put(t);
         common.put(file);
       }
+    common.put(writer->packed_xdmf_entries());
     common.put_count(linear_solver.n_preconditioner_setups());
     common.put_count(linear_solver.n_preconditioner_refreshes());
     system->save_state(own);
@@ -113,6 +114,7 @@ namespace hyperelastic
         t    = parts.common.get_double();
         name = parts.common.get_string();
       }
+    resumed_xdmf                 = parts.common.get_string();
     const unsigned int setups    = parts.common.get_count();
     const unsigned int refreshes = parts.common.get_count();
     linear_solver.set_setup_counts(setups, refreshes);

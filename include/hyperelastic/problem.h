@@ -149,7 +149,8 @@ namespace hyperelastic
     bool
     writes_frames() const
     {
-      return parameters.output.write_vtu || surface != nullptr;
+      return parameters.output.write_vtu || parameters.output.write_hdf5 ||
+             surface != nullptr;
     }
     /// One output frame: the VTU files of load step @p step and the
     /// surface file, as the scene asks.
@@ -207,6 +208,7 @@ namespace hyperelastic
     /// keep (null: from the start).
     std::unique_ptr<ResumePoint>                resume_point;
     std::vector<std::pair<double, std::string>> resumed_series;
+    std::string                                 resumed_xdmf;
     LinearSolver                            linear_solver;
     NewtonSolver                            newton;
 

@@ -7,6 +7,8 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/output/output.h>
 
+#include <boost/serialization/vector.hpp>
+
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -154,8 +156,68 @@ namespace hyperelastic
     // so ParaView shows the field and the deformed edges as the element
     // has them. P1: linear cells.
     const unsigned int degree = dof_handler.get_fe().degree;
-    data_out.build_patches(mapping, degree > 1 ? 2 : 1);
+    data_out.build_patches(mapping, degree > 1 && parameters.write_vtu ? 2 : 1);
+    if (parameters.write_vtu)
+      write_vtu(data_out, step, load_factor);
+    if (!parameters.write_hdf5)
+      return;
+    // deal.II 9.4's HDF5 writer fails on quadratic simplex patches: P2 is
+    // written at its vertices.
+    if (degree > 1 && parameters.write_vtu)
+      data_out.build_patches(mapping, 1);
+    write_hdf5(data_out, step, load_factor);
+  }
 
+  template <int dim>
+  void
+  OutputWriter<dim>::write_hdf5(const DataOut<dim> &data_out,
+                                const unsigned int  step,
+                                const double        load_factor)
+  {
+    // Every cell with its own vertices (as in the VTU files), so that the
+    // cell fields keep their value per cell.
+    DataOutBase::DataOutFilter filter(
+      DataOutBase::DataOutFilterFlags(false, true));
+    data_out.write_filtered_data(filter);
+    const std::string folder = parameters.directory + "/";
+    const std::string mesh   = parameters.base_name + "_mesh.h5";
+    const std::string fields =
+      parameters.base_name + "_" + Utilities::int_to_string(step, 4) + ".h5";
+    data_out.write_hdf5_parallel(
+      filter, xdmf_entries.empty(), folder + mesh, folder + fields, comm);
+    xdmf_entries.push_back(
+      data_out.create_xdmf_entry(filter, mesh, fields, load_factor, comm));
+    const std::string xdmf = folder + parameters.base_name + ".xdmf";
+    data_out.write_xdmf_file(xdmf_entries, xdmf + ".partial", comm);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::error_code ec;
+        std::filesystem::rename(xdmf + ".partial", xdmf, ec);
+      }
+  }
+
+  template <int dim>
+  std::string
+  OutputWriter<dim>::packed_xdmf_entries() const
+  {
+    const std::vector<char> bytes = Utilities::pack(xdmf_entries, false);
+    return std::string(bytes.begin(), bytes.end());
+  }
+
+  template <int dim>
+  void
+  OutputWriter<dim>::resume_xdmf_entries(const std::string &packed)
+  {
+    xdmf_entries = Utilities::unpack<std::vector<XDMFEntry>>(
+      std::vector<char>(packed.begin(), packed.end()), false);
+  }
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_vtu(const DataOut<dim> &data_out,
+                               const unsigned int  step,
+                               const double        load_factor)
+  {
     const std::string pvtu = data_out.write_vtu_with_pvtu_record(
       parameters.directory + "/", parameters.base_name, step, comm, 4);
     pvd_entries.emplace_back(load_factor, pvtu);

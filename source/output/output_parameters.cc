@@ -59,6 +59,17 @@ namespace hyperelastic
       "continues the run, the CSV and the PVD where the checkpoint was "
       "written, on the same number of MPI ranks; the scene may run further "
       "(a later End time). 0: no checkpoints.");
+    prm.declare_entry(
+      "Write HDF5",
+      "false",
+      Bool(),
+      "Also write the fields as HDF5 with an XDMF index for big runs: "
+      "<base>.xdmf (open it in ParaView or VisIt; rewritten every output "
+      "step), the reference mesh once in <base>_mesh.h5 and one "
+      "<base>_NNNN.h5 per output step, written by all ranks together (one "
+      "file per step instead of one per rank). Every cell has its own "
+      "vertices, so cell fields stay exact; P2 is written at its vertices "
+      "(linear cells). Independent of 'Write VTU'.");
     prm.declare_entry("Verbose",
                       "true",
                       Bool(),
@@ -84,6 +95,7 @@ namespace hyperelastic
     directory = dealii::Utilities::trim(prm.get("Directory"));
     base_name = dealii::Utilities::trim(prm.get("Base name"));
     write_vtu = prm.get_bool("Write VTU");
+    write_hdf5 = prm.get_bool("Write HDF5");
     verbose   = prm.get_bool("Verbose");
     checkpoint_every = prm.get_integer("Checkpoint every");
     const std::string surface = prm.get("Surface format");

@@ -3,9 +3,11 @@
 // converged load step.
 #pragma once
 
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/numerics/data_out.h>
 
 #include <hyperelastic/output/cell_fields.h>
 #include <hyperelastic/output/output_parameters.h>
@@ -39,7 +41,9 @@ namespace hyperelastic
     };
 
     /// Writes <base>_<step>.<rank>.vtu, <base>_<step>.pvtu and rewrites
-    /// <base>.pvd. @p u and the @p nodal fields must have ghost entries.
+    /// <base>.pvd ('Write VTU'); with 'Write HDF5' <base>_<step>.h5 (and
+    /// <base>_mesh.h5 the first time) and rewrites <base>.xdmf. @p u and
+    /// the @p nodal fields must have ghost entries.
     void
     write_fields(unsigned int                                 step,
                  double                                       load_factor,
@@ -75,10 +79,31 @@ namespace hyperelastic
       pvd_entries = std::move(entries);
     }
 
+    /// The XDMF index's entries so far, packed (for a checkpoint).
+    std::string
+    packed_xdmf_entries() const;
+
+    /// A restart: the XDMF index continues from these entries.
+    void
+    resume_xdmf_entries(const std::string &packed);
+
   private:
+    /// The VTU files of step @p step and the rewritten PVD.
+    void
+    write_vtu(const dealii::DataOut<dim> &data_out,
+              unsigned int                step,
+              double                      load_factor);
+
+    /// The HDF5 files of step @p step and the rewritten XDMF index.
+    void
+    write_hdf5(const dealii::DataOut<dim> &data_out,
+               unsigned int                step,
+               double                      load_factor);
+
     const OutputParameters                      parameters;
     const MPI_Comm                              comm;
     std::vector<std::pair<double, std::string>> pvd_entries;
+    std::vector<dealii::XDMFEntry>              xdmf_entries;
     std::ofstream                               csv;
   };
 } // namespace hyperelastic

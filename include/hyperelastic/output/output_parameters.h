@@ -26,6 +26,8 @@ namespace hyperelastic
     std::string directory = "output";
     std::string base_name = "solution";
     bool        write_vtu = true;
+    /// 'Write HDF5': <base>.xdmf with <base>_mesh.h5 and <base>_NNNN.h5.
+    bool write_hdf5 = false;
     bool        verbose   = true;
     SurfaceFormat surface_format = SurfaceFormat::none;
     /// 'Checkpoint every': steps between checkpoints (0: none).
