@@ -20,7 +20,7 @@
 #include "support/dimension_main.h"
 #include "support/scene_run.h"
 #include "support/scene_text.h"
-#include "support/summary_columns.h"
+#include "support/stretched_box.h"
 
 #include <array>
 #include <cmath>
@@ -77,36 +77,18 @@ namespace
                             std::to_string(degree) + "_np" +
                             std::to_string(Utilities::MPI::n_mpi_processes(
                               MPI_COMM_WORLD));
-    const auto problem = run_scene<dim>(
-      subsection("Problem",
-                 entry("Dimension", std::to_string(dim)) +
-                   entry("Finite element degree", std::to_string(degree))) +
-      subsection("Mesh",
-                 entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                   entry("Upper corner", three ? "1, 1, 1" : "1, 1") +
-                   entry("Subdivisions", three ? "2, 2, 2" : "3, 3")) +
-      subsection("Material",
-                 entry("Model", "neo-Hookean") +
-                   entry("Young's modulus", "1") +
-                   entry("Poisson's ratio", "0.3")) +
-      subsection("Loading", entry("Number of load steps", "2")) +
-      tight_solver("direct") + dirichlet(1, 0, "x", "0") +
-      dirichlet(2, 2, "y", "0") + (three ? dirichlet(3, 4, "z", "0") : "") +
-      dirichlet(4, 1, "x", "0.3*t") +
-      subsection("Output",
-                 entry("Directory", dir) + entry("Base name", "box") +
-                   entry("Write HDF5", "true")));
+    const auto problem = run_scene<dim>(stretched_unit_box(
+      dim,
+      three ? "2, 2, 2" : "3, 3",
+      entry("Directory", dir) + entry("Base name", "box") +
+        entry("Write HDF5", "true"),
+      entry("Finite element degree", std::to_string(degree))));
     MPI_Barrier(MPI_COMM_WORLD);
     const std::string tag =
       std::to_string(dim) + "D P" + std::to_string(degree) + ": ";
     const unsigned int n_cells =
       problem->get_dof_handler().get_triangulation().n_global_active_cells();
-    const auto &last    = problem->summaries().back();
-    const char  axes[3] = {'x', 'y', 'z'};
-    double      l[3]    = {1., 1., 1.};
-    for (unsigned int d = 0; d < dim; ++d)
-      l[d] = column(last, std::string("deformed_max_") + axes[d]) -
-             column(last, std::string("deformed_min_") + axes[d]);
+    const std::array<double, 3> l = box_stretches(problem->summaries().back());
 
     // The XDMF index.
     std::ifstream      in(dir + "/box.xdmf");

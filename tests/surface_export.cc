@@ -24,7 +24,7 @@
 #include "support/dimension_main.h"
 #include "support/scene_run.h"
 #include "support/scene_text.h"
-#include "support/summary_columns.h"
+#include "support/stretched_box.h"
 
 #include <array>
 #include <cmath>
@@ -136,33 +136,13 @@ namespace
     const unsigned int n     = three ? 3 : 4;
     const std::string  dir   = folder(
       dim, format, Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
-    const std::string subdivisions =
-      three ? "3, 3, 3" : "4, 4";
-    const auto problem = run_scene<dim>(
-      subsection("Problem", entry("Dimension", std::to_string(dim))) +
-      subsection("Mesh",
-                 entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                   entry("Upper corner", three ? "1, 1, 1" : "1, 1") +
-                   entry("Subdivisions", subdivisions)) +
-      subsection("Material",
-                 entry("Model", "neo-Hookean") +
-                   entry("Young's modulus", "1") +
-                   entry("Poisson's ratio", "0.3")) +
-      subsection("Loading", entry("Number of load steps", "2")) +
-      tight_solver("direct") + dirichlet(1, 0, "x", "0") +
-      dirichlet(2, 2, "y", "0") + (three ? dirichlet(3, 4, "z", "0") : "") +
-      dirichlet(4, 1, "x", "0.3*t") +
-      subsection("Output",
-                 entry("Directory", dir) + entry("Base name", "cube") +
-                   entry("Write VTU", "false") +
-                   entry("Surface format", format)));
-    const std::string tag = std::to_string(dim) + "D " + format + ": ";
-    const auto       &last = problem->summaries().back();
-    const char        axes[3] = {'x', 'y', 'z'};
-    std::array<double, 3> l   = {1., 1., 1.};
-    for (unsigned int d = 0; d < dim; ++d)
-      l[d] = column(last, std::string("deformed_max_") + axes[d]) -
-             column(last, std::string("deformed_min_") + axes[d]);
+    const auto problem = run_scene<dim>(stretched_unit_box(
+      dim,
+      three ? "3, 3, 3" : "4, 4",
+      entry("Directory", dir) + entry("Base name", "cube") +
+        entry("Write VTU", "false") + entry("Surface format", format)));
+    const std::string           tag = std::to_string(dim) + "D " + format + ": ";
+    const std::array<double, 3> l   = box_stretches(problem->summaries().back());
     checker.is_true(tag + "frames 0, 1, 2 and no frame 3",
                     std::filesystem::exists(frame_file(dir, format, 2)) &&
                       !std::filesystem::exists(frame_file(dir, format, 3)));

@@ -72,7 +72,8 @@ namespace
   {
     displacement,
     mixed,
-    incompressible
+    incompressible,
+    lateral_free ///< the displacement formulation, lateral faces free
   };
 
   Variant
@@ -99,12 +100,12 @@ namespace
                const Variant      how    = Variant::displacement)
   {
     const bool three    = dim == 3;
-    const bool confined = how != Variant::incompressible;
+    const bool confined = how == Variant::displacement || how == Variant::mixed;
+    const bool mixed    = how == Variant::mixed || how == Variant::incompressible;
     return subsection("Problem",
                       entry("Dimension", std::to_string(dim)) +
                         entry("Formulation",
-                              how == Variant::displacement ? "displacement"
-                                                           : "mixed")) +
+                              mixed ? "mixed" : "displacement")) +
            subsection("Mesh",
                       entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
                         entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
@@ -114,7 +115,9 @@ namespace
                         subsection("Yeoh",
                                    entry("C10", "0.5") +
                                      entry("Bulk modulus",
-                                           confined ? "5" : "inf")) +
+                                           how == Variant::incompressible
+                                             ? "inf"
+                                             : "5")) +
                         subsection("Viscoelasticity",
                                    entry("Weights", weights) +
                                      entry("Relaxation times", times))) +
@@ -272,27 +275,13 @@ namespace
     const std::string tag     = std::to_string(dim) + "D cut-back: ";
     const double      beta[2] = {1., 0.5}, tau[2] = {0.1, 0.8};
     const std::string end = "1.2*min(1, t/0.3)";
-    const bool        three = dim == 3;
-    // Lateral faces free: only the rollers x = 0, y = 0 (, z = 0).
-    const std::string scene =
-      subsection("Problem", entry("Dimension", std::to_string(dim))) +
-      subsection("Mesh",
-                 entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                   entry("Upper corner", three ? "3, 1, 1" : "3, 1") +
-                   entry("Subdivisions", three ? "3, 1, 1" : "6, 2")) +
-      subsection("Material",
-                 entry("Model", "Yeoh") +
-                   subsection("Yeoh",
-                              entry("C10", "0.5") + entry("Bulk modulus", "5")) +
-                   subsection("Viscoelasticity",
-                              entry("Weights", "1, 0.5") +
-                                entry("Relaxation times", "0.1, 0.8"))) +
-      subsection("Loading", entry("Number of load steps", "4")) +
-      tight_solver("direct") +
-      subsection("Newton", entry("Max iterations", "4")) +
-      dirichlet(1, 0, "x", "0") + dirichlet(2, 1, "x", end) +
-      dirichlet(3, 2, "y", "0") + (three ? dirichlet(5, 4, "z", "0") : "") +
-      subsection("Output", entry("Write VTU", "false"));
+    const std::string scene = confined_bar<dim>(
+      end,
+      "1, 0.5",
+      "0.1, 0.8",
+      4,
+      subsection("Newton", entry("Max iterations", "4")),
+      Variant::lateral_free);
     const auto   problem   = run_scene<dim>(scene);
     const auto  &rows      = problem->summaries();
     double       cut_backs = 0.;

@@ -196,13 +196,6 @@ namespace hyperelastic
 
   template <int dim>
   void
-  GenericAssembler<dim>::begin_step(const double dt)
-  {
-    materials.begin_step(dt);
-  }
-
-  template <int dim>
-  void
   GenericAssembler<dim>::accept_step(const VectorType &u)
   {
     if (materials.has_history())

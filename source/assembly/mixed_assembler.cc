@@ -502,13 +502,6 @@ namespace hyperelastic
 
   template <int dim>
   void
-  MixedAssembler<dim>::begin_step(const double dt)
-  {
-    isochoric.begin_step(dt);
-  }
-
-  template <int dim>
-  void
   MixedAssembler<dim>::accept_step(const VectorType &u)
   {
     if (!isochoric.has_history())

@@ -470,13 +470,6 @@ namespace hyperelastic
 
   template <int dim>
   void
-  P1Assembler<dim>::begin_step(const double dt)
-  {
-    materials.begin_step(dt);
-  }
-
-  template <int dim>
-  void
   P1Assembler<dim>::accept_step(const VectorType &u)
   {
     if (!materials.has_history())

@@ -8,6 +8,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <hyperelastic/assembly/assembly_tools.h>
+#include <hyperelastic/assembly/point_materials.h>
 #include <hyperelastic/base/tangent_projection_mode.h>
 
 namespace hyperelastic
@@ -52,14 +53,16 @@ namespace hyperelastic
 
     /// A model with history (Material::has_history()): the next step
     /// (each attempt of it) lasts @p dt from the last accepted state.
-    virtual void
+    void
     begin_step(const double dt)
     {
-      (void)dt;
+      if (const PointMaterials<dim> *points = point_materials())
+        points->begin_step(dt);
     }
 
     /// A model with history: the step ended at @p u (ghosted); every
-    /// quadrature point writes its new state.
+    /// quadrature point writes its new state (each assembler computes F
+    /// its own way).
     virtual void
     accept_step(const VectorType &u)
     {
@@ -68,16 +71,27 @@ namespace hyperelastic
 
     /// A model with history: appends the quadrature points' history to
     /// @p state (a checkpoint); load_history() reads it back.
-    virtual void
+    void
     save_history(std::vector<double> &state) const
     {
-      (void)state;
+      if (const PointMaterials<dim> *points = point_materials())
+        points->save_history(state);
     }
 
-    virtual void
+    void
     load_history(const std::vector<double> &state, std::size_t &position)
     {
-      (void)state, (void)position;
+      if (const PointMaterials<dim> *points = point_materials())
+        points->load_history(state, position);
+    }
+
+  protected:
+    /// The model at each quadrature point, where the assembler keeps one
+    /// (null: the scene's model everywhere, no history).
+    virtual const PointMaterials<dim> *
+    point_materials() const
+    {
+      return nullptr;
     }
   };
 } // namespace hyperelastic

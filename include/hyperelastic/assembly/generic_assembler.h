@@ -36,22 +36,13 @@ namespace hyperelastic
     stored_energy(const VectorType &u, bool with_energy) const override;
 
     void
-    begin_step(double dt) override;
-
-    void
     accept_step(const VectorType &u) override;
 
-    void
-    save_history(std::vector<double> &state) const override
+  protected:
+    const PointMaterials<dim> *
+    point_materials() const override
     {
-      materials.save_history(state);
-    }
-
-    void
-    load_history(const std::vector<double> &state,
-                 std::size_t               &position) override
-    {
-      materials.load_history(state, position);
+      return &materials;
     }
 
   private:

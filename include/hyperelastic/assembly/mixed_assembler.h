@@ -64,27 +64,18 @@ namespace hyperelastic
     EnergyEvaluation
     stored_energy(const VectorType &u, bool with_energy) const override;
 
-    /// A model with history (viscoelasticity): its isochoric part holds
-    /// the overstresses at each quadrature point.
-    void
-    begin_step(double dt) override;
-
     /// Every owned cell's points write their state at @p u (ghosted), the
     /// bubble solved (MINI).
     void
     accept_step(const VectorType &u) override;
 
-    void
-    save_history(std::vector<double> &state) const override
+  protected:
+    /// The isochoric part at each point (with viscoelasticity it holds the
+    /// overstresses).
+    const PointMaterials<dim> *
+    point_materials() const override
     {
-      isochoric.save_history(state);
-    }
-
-    void
-    load_history(const std::vector<double> &state,
-                 std::size_t               &position) override
-    {
-      isochoric.load_history(state, position);
+      return &isochoric;
     }
 
   private:

@@ -66,25 +66,16 @@ namespace hyperelastic
     EnergyEvaluation
     stored_energy(const VectorType &u, bool with_energy) const override;
 
-    void
-    begin_step(double dt) override;
-
     /// Every cell this rank sees (its own and its ghosts) writes its
     /// state: both compute the same F.
     void
     accept_step(const VectorType &u) override;
 
-    void
-    save_history(std::vector<double> &state) const override
+  protected:
+    const PointMaterials<dim> *
+    point_materials() const override
     {
-      materials.save_history(state);
-    }
-
-    void
-    load_history(const std::vector<double> &state,
-                 std::size_t               &position) override
-    {
-      materials.load_history(state, position);
+      return &materials;
     }
 
   private:
