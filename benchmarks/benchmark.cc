@@ -29,6 +29,13 @@
 //   DEGREE       1 (default) or 2
 //   then any number of SECTION/ENTRY=VALUE, appended to the scene (e.g.
 //   "Linear solver/AMG smoothed aggregation=false")
+//
+// With --stages first (mpirun -np R hyperelastic_benchmark --stages SCENE N
+// ...) only the set-up runs (Problem::setup(), no load step) and the row
+// holds the wall time of each set-up stage (slowest rank; header with
+// --stages --header): read, order, check, build, partition, wait, describe,
+// distribute (the mesh), dofs, system (sparsity, matrix), null_space,
+// operator, rest, and t_setup (the slowest rank's sum); peak memory as above.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
@@ -212,6 +219,17 @@ main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  // --stages: the set-up alone, one column per stage.
+  const bool stages_only = argc > 1 && std::string(argv[1]) == "--stages";
+  if (stages_only)
+    {
+      --argc;
+      ++argv;
+    }
+  const char *stages_header =
+    "scene,ranks,n,cells,dofs,read,order,check,build,partition,wait,"
+    "describe,distribute,dofs_setup,system,null_space,operator,rest,"
+    "t_setup,peak_memory_bytes";
   const char *header =
     "scene,ranks,n,cells,dofs,load_steps,newton_iterations,krylov_iterations,"
     "krylov_per_newton,amg_setups,t_setup,t_tangent_assembly,t_residual,t_line_search,"
@@ -221,7 +239,7 @@ main(int argc, char *argv[])
   if (argc > 1 && std::string(argv[1]) == "--header")
     {
       if (root)
-        std::cout << header << std::endl;
+        std::cout << (stages_only ? stages_header : header) << std::endl;
       return 0;
     }
   return run_and_report(
@@ -258,6 +276,34 @@ main(int argc, char *argv[])
             d.displacement = std::make_unique<ExactDisplacement<3>>();
           bc.body_force = std::make_unique<ManufacturedBodyForce<3>>(*material);
         });
+      if (stages_only)
+        {
+          problem.setup();
+          const unsigned int n_cells = problem.get_dof_handler()
+                                         .get_triangulation()
+                                         .n_global_active_cells();
+          const auto   n_dofs = problem.get_dof_handler().n_dofs();
+          double       sum    = 0.;
+          std::ostringstream row;
+          row << std::setprecision(6) << scene << ","
+              << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) << "," << n
+              << "," << n_cells << "," << n_dofs;
+          for (const auto &[name, seconds] : problem.setup_stage_times())
+            {
+              const double slowest =
+                Utilities::MPI::max(seconds, MPI_COMM_WORLD);
+              sum += seconds;
+              row << "," << slowest;
+            }
+          // The whole set-up: the slowest rank's sum (a rank waiting for
+          // the reader counts its wait, not the reader's stages).
+          const double total_setup = Utilities::MPI::max(sum, MPI_COMM_WORLD);
+          const double memory      = peak_memory_bytes();
+          if (root)
+            std::cout << row.str() << "," << total_setup << "," << memory
+                      << std::endl;
+          return;
+        }
       problem.run();
       total.stop();
 

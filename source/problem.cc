@@ -50,8 +50,27 @@ namespace hyperelastic
   void
   Problem<dim>::setup()
   {
+    if (is_set_up)
+      return;
+    is_set_up = true;
     TimerOutput::Scope scope(timer, "mesh and setup");
-    const auto         mesh_ids = create_mesh(parameters.mesh, triangulation);
+    MeshStatistics     mesh_stats;
+    const auto         mesh_ids =
+      create_mesh(parameters.mesh, triangulation, &mesh_stats);
+    setup_stages = {{"read", mesh_stats.read_time},
+                    {"order", mesh_stats.order_time},
+                    {"check", mesh_stats.check_time},
+                    {"build", mesh_stats.build_time},
+                    {"partition", mesh_stats.partition_time},
+                    {"wait", mesh_stats.wait_time},
+                    {"describe", mesh_stats.describe_time},
+                    {"distribute", mesh_stats.distribute_time}};
+    // The stages after the mesh, each from the end of the one before.
+    Timer      stage_timer;
+    const auto end_stage = [&](const std::string &name) {
+      setup_stages.emplace_back(name, stage_timer.wall_time());
+      stage_timer.restart();
+    };
 
     material = create_material<dim>(parameters.material);
     boundary_conditions =
@@ -61,6 +80,7 @@ namespace hyperelastic
 
     dof_handler.distribute_dofs(fe);
     const IndexSet pressure_dofs = formulation->pressure_dofs(dof_handler);
+    end_stage("dofs");
     postprocessor =
       std::make_unique<StepPostprocessor<dim>>(dof_handler,
                                                mapping,
@@ -77,10 +97,12 @@ namespace hyperelastic
                                              linear_solver,
                                              timer,
                                              pcout});
+    end_stage("system");
     if (parameters.linear_solver.type == LinearSolverType::cg_amg)
       linear_solver.set_near_null_space(rigid_body_modes(mapping, dof_handler),
                                         n_rigid_body_modes<dim>,
                                         dim);
+    end_stage("null space");
 
     elasticity = std::make_unique<ElasticityOperator<dim>>(
       dof_handler,
@@ -89,6 +111,7 @@ namespace hyperelastic
       *boundary_conditions,
       parameters.problem.fast_p1_assembly,
       formulation->material_part(dof_handler, mapping, *material));
+    end_stage("operator");
     if (!parameters.contact.obstacles.empty())
       {
         auto term = std::make_unique<ObstacleContact<dim>>(
@@ -174,6 +197,7 @@ namespace hyperelastic
         surface_format,
         parameters.output.directory,
         parameters.output.base_name);
+    end_stage("rest");
     print_header();
   }
 
@@ -246,6 +270,8 @@ namespace hyperelastic
     s.newton_iterations = result.iterations();
     s.linear_iterations = result.linear_iterations();
     s.backtracks        = result.backtracks();
+    if (parameters.linear_solver.type == LinearSolverType::cg_amg)
+      s.amg_setups = linear_solver.n_preconditioner_setups();
     s.newton_history    = result.history;
     s.residual          = result.history.back().residual;
     s.energy = elasticity->total_energy(system->solution(), s.load_factor);

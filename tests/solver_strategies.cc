@@ -99,6 +99,35 @@ main(int argc, char *argv[])
       check.is_true("exact run: one AMG setup per Newton iteration (" +
                       std::to_string(exact.setups) + ")",
                     exact.setups == exact.newton);
+      // The CSV column amg_setups: the running count, step by step; with a
+      // hierarchy per Newton iteration (and no cut-back) it is the running
+      // sum of the Newton iterations.
+      {
+        bool         running = true, absent = false;
+        unsigned int newton  = 0;
+        for (const auto &s : exact.steps)
+          {
+            newton += s.newton_iterations;
+            absent = absent || !s.amg_setups;
+            running =
+              running && s.cut_backs == 0 && s.amg_setups == newton;
+          }
+        check.is_true("CSV amg_setups, one setup per Newton iteration: the "
+                      "running sum of newton_iterations",
+                      !absent && running);
+        check.is_true("CSV amg_setups, reuse: the last row counts every "
+                      "setup of the run (" +
+                        std::to_string(fast.setups) + ")",
+                      fast.steps.back().amg_setups == fast.setups);
+        unsigned int previous = 0;
+        bool         rising   = true;
+        for (const auto &s : fast.steps)
+          {
+            rising   = rising && s.amg_setups && *s.amg_setups >= previous;
+            previous = s.amg_setups.value_or(0);
+          }
+        check.is_true("CSV amg_setups, reuse: never decreasing", rising);
+      }
       check.at_most("reuse: AMG setups per Newton iteration",
                     double(fast.setups) / fast.newton,
                     0.5);

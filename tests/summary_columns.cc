@@ -1,6 +1,7 @@
 // The one place the CSV column list is asserted: StepSummary::columns() with
 // every optional group present (reactions on two boundary ids, two output
-// points, the pressure range, dynamics, a column added by a feature), in 2D
+// points, the AMG set-up count, the pressure range, dynamics, a column added
+// by a feature), in 2D
 // and 3D, names in order and each value where its name says.
 #include <hyperelastic/output/step_summary.h>
 
@@ -37,6 +38,7 @@ namespace
     s.load_increment      = 0.25;
     s.cut_backs           = 1;
     s.backtracks          = 2;
+    s.amg_setups          = 7;
     s.inverted_cells      = 0;
     s.point_displacements = {force, 2. * force};
     s.has_pressure        = true;
@@ -68,6 +70,7 @@ namespace
     checker.close(tag + "reaction_5_y", value("reaction_5_y"), -11., 1., 1e-15);
     checker.close(
       tag + "deformed_max_y", value("deformed_max_y"), 2., 1., 1e-15);
+    checker.close(tag + "amg_setups", value("amg_setups"), 7., 1., 1e-15);
     checker.close(tag + "point2_ux", value("point2_ux"), 20., 1., 1e-15);
     checker.close(tag + "total_energy", value("total_energy"), 3., 1., 1e-15);
     checker.close(
@@ -103,6 +106,7 @@ main(int argc, char **argv)
     for (const std::string n : {"load_increment",
                                 "cut_backs",
                                 "line_search_backtracks",
+                                "amg_setups",
                                 "inverted_cells",
                                 "point1_ux",
                                 "point1_uy",
@@ -130,7 +134,7 @@ main(int argc, char **argv)
       }
     for (const std::string n :
          {"load_increment",     "cut_backs",          "line_search_backtracks",
-          "inverted_cells",     "point1_ux",          "point1_uy",
+          "amg_setups",         "inverted_cells",     "point1_ux",          "point1_uy",
           "point1_uz",          "point2_ux",          "point2_uy",
           "point2_uz",          "pressure_min",       "pressure_max",
           "kinetic_energy",     "total_energy",       "momentum_x",

@@ -93,6 +93,19 @@ namespace hyperelastic
       return timer.get_summary_data(dealii::TimerOutput::total_wall_time);
     }
 
+    /// Wall time in seconds of each stage of the set-up on this rank, in
+    /// order: the mesh's (read, order, check, build, partition, wait,
+    /// describe, distribute: MeshStatistics), then "dofs" (numbering),
+    /// "system" (sparsity, matrix and vectors), "null space" (rigid-body
+    /// modes for AMG), "operator" (element kernels), "rest" (loads,
+    /// stepping, checks, output set-up). Their sum is the "mesh and setup"
+    /// phase of wall_times().
+    const std::vector<std::pair<std::string, double>> &
+    setup_stage_times() const
+    {
+      return setup_stages;
+    }
+
     /// How often the AMG hierarchy was computed (for benchmarks).
     unsigned int
     n_preconditioner_setups() const
@@ -135,11 +148,15 @@ namespace hyperelastic
       return system->solution();
     }
 
+    /// Builds the mesh, the unknowns, the system and the operators: the
+    /// "mesh and setup" phase. run() calls it; a benchmark of the set-up
+    /// alone calls it directly (once; run() then does not repeat it).
+    void
+    setup();
+
   private:
     void
     solve_all_load_steps();
-    void
-    setup();
     /// The run header: element, size, ranks, material, solver, loads.
     void
     print_header() const;
@@ -178,6 +195,8 @@ namespace hyperelastic
 
     const std::unique_ptr<Formulation<dim>>                formulation;
     dealii::parallel::fullydistributed::Triangulation<dim> triangulation;
+    std::vector<std::pair<std::string, double>>            setup_stages;
+    bool                                                   is_set_up = false;
     const dealii::FESystem<dim>                            fe;
     const dealii::MappingFE<dim>                           mapping;
     dealii::DoFHandler<dim>                                dof_handler;

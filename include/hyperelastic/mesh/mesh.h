@@ -31,13 +31,14 @@ namespace hyperelastic
     /// reversed before the mesh was built (on every rank).
     std::size_t reoriented_cells = 0;
     /// Wall times in seconds. On the reader (0 elsewhere): reading (or
-    /// generating), checking (zero measures, folds), building (face
+    /// generating), ordering the cells along a space-filling curve (a
+    /// file), checking (zero measures, folds), building (face
     /// neighbours and boundary faces; for a mesh to be refined also the
     /// serial triangulation), refining and partitioning. On every rank: waiting
     /// for the reader's outcome (others), making and sending the descriptions
     /// (reader) or receiving one (others), and building the distributed
     /// triangulation.
-    double read_time = 0., check_time = 0., build_time = 0.,
+    double read_time = 0., order_time = 0., check_time = 0., build_time = 0.,
            partition_time = 0., wait_time = 0., describe_time = 0.,
            distribute_time = 0.;
   };

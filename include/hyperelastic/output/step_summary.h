@@ -8,6 +8,7 @@
 
 #include <hyperelastic/solvers/newton_result.h>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,6 +32,9 @@ namespace hyperelastic
     unsigned int newton_iterations = 0;
     unsigned int linear_iterations = 0;
     unsigned int backtracks        = 0; ///< rejected line-search trials
+    /// AMG hierarchies computed so far in the run (built or refreshed);
+    /// a column only where the linear solver is CG with AMG.
+    std::optional<unsigned int> amg_setups;
     std::vector<NewtonIteration> newton_history;
     double                       residual = 0.;
     /// Total potential energy; in dynamics the potential energy (strain
@@ -67,7 +71,8 @@ namespace hyperelastic
     /// step, load_factor, newton_iterations, linear_iterations, residual,
     /// energy, min_J, reaction_<id>_<x|y|z> per Dirichlet boundary id,
     /// deformed_min_<axis> and deformed_max_<axis> per axis, load_increment,
-    /// cut_backs, line_search_backtracks, inverted_cells, point<k>_u<axis>
+    /// cut_backs, line_search_backtracks, amg_setups (CG with AMG only),
+    /// inverted_cells, point<k>_u<axis>
     /// per output point; then with a pressure pressure_min, pressure_max; in
     /// dynamics kinetic_energy, total_energy, momentum_<axis> per axis,
     /// angular_momentum_x, _y (3D only), _z; then the added ones.
@@ -97,6 +102,8 @@ namespace hyperelastic
       add("load_increment", load_increment);
       add("cut_backs", cut_backs);
       add("line_search_backtracks", backtracks);
+      if (amg_setups)
+        add("amg_setups", *amg_setups);
       add("inverted_cells", inverted_cells);
       for (unsigned int k = 0; k < point_displacements.size(); ++k)
         for (unsigned int d = 0; d < dim; ++d)
