@@ -35,10 +35,15 @@ namespace hyperelastic
               print ? TimerOutput::summary : TimerOutput::never,
               TimerOutput::wall_times)
       , formulation(create_formulation<dim>(parameters))
-      , triangulation(comm)
+      , triangulation(
+          Utilities::MPI::n_mpi_processes(comm) == 1 ?
+            std::unique_ptr<Triangulation<dim>>(
+              std::make_unique<SerialTriangulation<dim>>(comm)) :
+            std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
+              comm))
       , fe(formulation->finite_element())
       , mapping(FE_SimplexP<dim>(1))
-      , dof_handler(triangulation)
+      , dof_handler(*triangulation)
       , linear_solver(parameters.linear_solver)
       , newton(parameters.newton, pcout, parameters.output.verbose)
   {
@@ -56,7 +61,15 @@ namespace hyperelastic
     TimerOutput::Scope scope(timer, "mesh and setup");
     MeshStatistics     mesh_stats;
     const auto         mesh_ids =
-      create_mesh(parameters.mesh, triangulation, &mesh_stats);
+      Utilities::MPI::n_mpi_processes(comm) == 1 ?
+        create_serial_mesh(parameters.mesh,
+                           static_cast<SerialTriangulation<dim> &>(
+                             *triangulation),
+                           &mesh_stats) :
+        create_mesh(parameters.mesh,
+                    static_cast<parallel::fullydistributed::Triangulation<dim>
+                                  &>(*triangulation),
+                    &mesh_stats);
     setup_stages = {{"read", mesh_stats.read_time},
                     {"order", mesh_stats.order_time},
                     {"check", mesh_stats.check_time},
@@ -207,7 +220,7 @@ namespace hyperelastic
   {
     pcout << "hyperelastic: " << dim << "D" << (dim == 2 ? " plane strain" : "")
           << ", " << formulation->element_description() << ", "
-          << triangulation.n_global_active_cells() << " cells, "
+          << triangulation->n_global_active_cells() << " cells, "
           << dof_handler.n_dofs() << " unknowns, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n"
           << "material: " << parameters.material.model

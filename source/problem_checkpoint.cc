@@ -26,7 +26,7 @@ namespace hyperelastic
   {
     std::ostringstream text;
     text << "dimension: " << dim << "\n"
-         << "cells: " << triangulation.n_global_active_cells() << "\n"
+         << "cells: " << triangulation->n_global_active_cells() << "\n"
          << "unknowns: " << dof_handler.n_dofs() << "\n"
          << "element: " << formulation->element_description() << "\n"
          << "model: " << material->name() << "\n"

@@ -1,7 +1,7 @@
 // Mesh creation: the orchestration of create_mesh() (the reader, rank 0,
 // generates the box or reads and checks a gmsh file, refines and partitions
-// it; every other rank receives only the description of its own part), the
-// generated box and its boundary ids.
+// it; every other rank receives only the description of its own part), its
+// one-rank form create_serial_mesh(), the generated box and its boundary ids.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/grid_generator.h>
@@ -271,6 +271,55 @@ namespace hyperelastic
                                         outcome.boundary_ids.end());
   }
 
+  template <int dim>
+  std::set<types::boundary_id>
+  create_serial_mesh(const MeshParameters     &parameters,
+                     SerialTriangulation<dim> &tria,
+                     MeshStatistics           *statistics)
+  {
+    AssertThrow(Utilities::MPI::n_mpi_processes(tria.get_communicator()) == 1,
+                ExcMessage("a serial triangulation is for one MPI rank"));
+    MeshStatistics stats;
+    stats.reader = true;
+    if (parameters.source == MeshSource::box)
+      {
+        Timer timer;
+        build_box(parameters, tria);
+        stats.read_time = timer.wall_time();
+      }
+    else
+      {
+        CheckedMesh<dim> mesh = read_and_check_gmsh<dim>(parameters.file, stats);
+        stats.reoriented_cells = mesh.n_reoriented;
+        Timer timer;
+        // Nodes no cell uses (gmsh files may list them) are dropped, as the
+        // description of the distributed path drops them.
+        GridTools::delete_unused_vertices(mesh.vertices,
+                                          mesh.cells,
+                                          mesh.boundary);
+        try
+          {
+            tria.create_triangulation(mesh.vertices, mesh.cells, mesh.boundary);
+          }
+        catch (const std::exception &e)
+          {
+            throw InputError("cannot read mesh file '" + parameters.file +
+                             "' as a gmsh mesh of dimension " +
+                             std::to_string(dim) + ": " + exception_message(e));
+          }
+        stats.distribute_time = timer.wall_time();
+      }
+    Timer timer;
+    tria.refine_global(parameters.global_refinements);
+    stats.partition_time   = timer.wall_time();
+    stats.global_cells     = tria.n_active_cells();
+    stats.serial_cells     = stats.global_cells;
+    if (statistics)
+      *statistics = stats;
+    const std::vector<types::boundary_id> ids = tria.get_boundary_ids();
+    return std::set<types::boundary_id>(ids.begin(), ids.end());
+  }
+
   template void
   set_box_boundary_ids(Triangulation<2> &);
   template void
@@ -283,4 +332,12 @@ namespace hyperelastic
   create_mesh(const MeshParameters &,
               parallel::fullydistributed::Triangulation<3> &,
               MeshStatistics *);
+  template std::set<types::boundary_id>
+  create_serial_mesh(const MeshParameters &,
+                     SerialTriangulation<2> &,
+                     MeshStatistics *);
+  template std::set<types::boundary_id>
+  create_serial_mesh(const MeshParameters &,
+                     SerialTriangulation<3> &,
+                     MeshStatistics *);
 } // namespace hyperelastic

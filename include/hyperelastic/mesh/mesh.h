@@ -6,6 +6,7 @@
 
 #include <deal.II/base/types.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
+#include <deal.II/grid/tria.h>
 
 #include <hyperelastic/mesh/mesh_parameters.h>
 
@@ -65,6 +66,41 @@ namespace hyperelastic
   create_mesh(const MeshParameters &parameters,
               dealii::parallel::fullydistributed::Triangulation<dim> &tria,
               MeshStatistics *statistics = nullptr);
+
+  /// A serial triangulation for a run on one MPI rank: the mesh is built
+  /// directly from the box or the checked cell list, without the
+  /// description and the fully distributed triangulation's construction
+  /// (about half of the set-up's time, benchmarks/setup). It answers
+  /// get_communicator() with the run's communicator (of one rank) instead of
+  /// MPI_COMM_SELF, so that vectors made from the DoFHandler and from the
+  /// run's communicator fit together.
+  template <int dim>
+  class SerialTriangulation : public dealii::Triangulation<dim>
+  {
+  public:
+    explicit SerialTriangulation(const MPI_Comm comm)
+        : comm(comm)
+    {}
+
+    MPI_Comm
+    get_communicator() const override
+    {
+      return comm;
+    }
+
+  private:
+    const MPI_Comm comm;
+  };
+
+  /// Builds @p tria as create_mesh() does, for a run on one rank (the same
+  /// cells in the same order, the same checks, boundary ids and messages).
+  /// Statistics: read, order, check, build as there; "distribute" is the
+  /// construction of the triangulation.
+  template <int dim>
+  std::set<dealii::types::boundary_id>
+  create_serial_mesh(const MeshParameters       &parameters,
+                     SerialTriangulation<dim> &tria,
+                     MeshStatistics             *statistics = nullptr);
 
   /// Boundary ids of a box: 2 d on the face x_d = min, 2 d + 1 on x_d = max.
   /// Set from face centres since deal.II 9.4 cannot colorize simplex boxes.
