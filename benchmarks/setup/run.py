@@ -8,6 +8,8 @@
            gmsh bar of mesh_input/bar_big.geo (L = 4, h = 1/n, about 19 n^3
            tetrahedra) and for the generated box of the same bar (4n x n x n
            boxes, 24 n^3 tetrahedra), from 1e4 to 1.2e6 cells -> stages.csv
+           (stages_before.csv: the same before one rank built a serial
+           triangulation, kept for the comparison)
   twist    the twist of the gmsh bar (90 degrees, gravity) in ONE load step,
            the whole process: time per unknown, AMG set-ups per run and their
            share of the run, CG iterations per Newton step -> twist.csv
