@@ -36,15 +36,26 @@
 // --stages --header): read, order, check, build, partition, wait, describe,
 // distribute (the mesh), dofs, system (sparsity, matrix), null_space,
 // operator, rest, and t_setup (the slowest rank's sum); peak memory as above.
+//
+// With --p2-preconditioner first (DEGREE 2; header with --p2-preconditioner
+// --header) the scene runs as usual, then its last tangent A is solved for
+// b = A x (x known, smooth in the unknown's index) to 1e-8 relative with CG
+// and each preconditioner: ML AMG on A itself (the application's solver)
+// and the two-level P2 -> P1 scheme (TwoLevelPreconditioner) with Chebyshev
+// degree 1, 2, 3; one row each: set-up and solve time, CG iterations, error.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/problem.h>
+#include <hyperelastic/solvers/linear_solver.h>
+#include <hyperelastic/solvers/rigid_body_modes.h>
+#include <hyperelastic/solvers/two_level_preconditioner.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/mapping_fe.h>
+#include <deal.II/lac/solver_cg.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include "support/analytic_bar.h"
@@ -64,6 +75,72 @@ using namespace hyperelastic::testing;
 namespace
 {
   constexpr double stretch = 1.5; // bar scene: final length / initial
+
+  /// The rows of --p2-preconditioner for the last tangent of @p problem.
+  void
+  compare_p2_preconditioners(const Problem<3>             &problem,
+                             const LinearSolverParameters &solver_parameters,
+                             const std::string            &prefix)
+  {
+    const MatrixType &A    = problem.tangent_matrix();
+    const MPI_Comm    comm = A.get_mpi_communicator();
+    VectorType exact(A.locally_owned_domain_indices(), comm);
+    for (const auto i : A.locally_owned_domain_indices())
+      exact(i) = std::sin(0.37 * i) + 0.5;
+    exact.compress(VectorOperation::insert);
+    VectorType b(exact), x(exact);
+    A.vmult(b, exact);
+    const auto report = [&](const std::string &name,
+                            const double       setup,
+                            const unsigned int iterations,
+                            const double       solve,
+                            const types::global_dof_index coarse_dofs) {
+      VectorType error(x);
+      error -= exact;
+      const double relative = error.l2_norm() / exact.l2_norm();
+      const double t_setup  = Utilities::MPI::max(setup, comm);
+      const double t_solve  = Utilities::MPI::max(solve, comm);
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        std::cout << prefix << "," << coarse_dofs << "," << name << ","
+                  << t_setup << "," << iterations << "," << t_solve << ","
+                  << t_setup + t_solve << "," << relative << std::endl;
+    };
+    const double tolerance = 1e-8;
+    {
+      LinearSolver solver(solver_parameters);
+      solver.set_near_null_space(
+        rigid_body_modes(MappingFE<3>(FE_SimplexP<3>(1)),
+                         problem.get_dof_handler()),
+        n_rigid_body_modes<3>,
+        3);
+      Timer setup;
+      solver.prepare(A);
+      setup.stop();
+      x = 0.;
+      Timer              solve;
+      const unsigned int its = solver.solve(A, x, b, tolerance);
+      solve.stop();
+      report("ML on P2", setup.wall_time(), its, solve.wall_time(), 0);
+    }
+    for (const unsigned int degree : {1u, 2u, 3u})
+      {
+        Timer                       setup;
+        TwoLevelPreconditioner<3>   two_level(problem.get_dof_handler(),
+                                            degree);
+        two_level.initialize(A);
+        setup.stop();
+        x = 0.;
+        SolverControl control(2000, tolerance * b.l2_norm());
+        Timer         solve;
+        SolverCG<VectorType>(control).solve(A, x, b, two_level);
+        solve.stop();
+        report("two-level Chebyshev " + std::to_string(degree),
+               setup.wall_time(),
+               control.last_step(),
+               solve.wall_time(),
+               two_level.n_coarse_dofs());
+      }
+  }
 
   std::string
   scene_text(const std::string &scene, const unsigned int n, const unsigned int degree)
@@ -221,7 +298,9 @@ main(int argc, char *argv[])
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   // --stages: the set-up alone, one column per stage.
   const bool stages_only = argc > 1 && std::string(argv[1]) == "--stages";
-  if (stages_only)
+  const bool p2_preconditioner =
+    argc > 1 && std::string(argv[1]) == "--p2-preconditioner";
+  if (stages_only || p2_preconditioner)
     {
       --argc;
       ++argv;
@@ -236,10 +315,15 @@ main(int argc, char *argv[])
     "t_preconditioner,t_krylov,t_output,t_total,t_spmv,"
     "assembly_per_newton_in_spmv,peak_memory_bytes,memory_per_dof_bytes,"
     "energy,error,degree,error_h1,t_contact";
+  const char *p2_header = "scene,ranks,n,dofs,coarse_dofs,preconditioner,"
+                          "t_setup,cg_iterations,t_solve,t_total,error";
   if (argc > 1 && std::string(argv[1]) == "--header")
     {
       if (root)
-        std::cout << (stages_only ? stages_header : header) << std::endl;
+        std::cout << (stages_only         ? stages_header
+                      : p2_preconditioner ? p2_header
+                                          : header)
+                  << std::endl;
       return 0;
     }
   return run_and_report(
@@ -306,6 +390,17 @@ main(int argc, char *argv[])
         }
       problem.run();
       total.stop();
+      if (p2_preconditioner)
+        {
+          std::ostringstream prefix;
+          prefix << std::setprecision(6) << scene << ","
+                 << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) << ","
+                 << n << "," << problem.get_dof_handler().n_dofs();
+          compare_p2_preconditioners(problem,
+                                     parameters.linear_solver,
+                                     prefix.str());
+          return;
+        }
 
       std::map<std::string, double> times = problem.wall_times();
       const auto                    time  = [&](const std::string &phase) {

@@ -13,6 +13,11 @@
   twist    the twist of the gmsh bar (90 degrees, gravity) in ONE load step,
            the whole process: time per unknown, AMG set-ups per run and their
            share of the run, CG iterations per Newton step -> twist.csv
+  p2       the P2 twist of the box bar (4n x n x n boxes) in one load step,
+           its last tangent solved to 1e-8 with CG and ML on the P2 matrix
+           against the two-level P2 -> P1 preconditioner (Chebyshev degree
+           1, 2, 3; hyperelastic_benchmark --p2-preconditioner): set-up and
+           solve time, iterations -> p2_preconditioner.csv
 
   /usr/bin/python3 benchmarks/setup/run.py            # both (~15 min)
   /usr/bin/python3 benchmarks/setup/run.py --quick    # small sizes (~20 s)
@@ -43,20 +48,26 @@ STAGES = ["read", "order", "check", "build", "partition", "wait", "describe",
 FILE_SIZES = [10, 14, 20, 28, 40]
 BOX_SIZES = [8, 12, 16, 24, 34]
 TWIST_SIZES = [10, 14, 20, 28, 40]
-QUICK = {"file": [6, 8], "box": [4, 6], "twist": [6, 8]}
+P2_SIZES = [4, 8, 12, 16]
+QUICK = {"file": [6, 8], "box": [4, 6], "twist": [6, 8], "p2": [4]}
 
 
 def command(ranks, args):
     return [MPIRUN, "-np", str(ranks), EXE] + args
 
 
-def run_row(ranks, args):
+def run_rows(ranks, args):
+    """The CSV rows a benchmark run prints (after its progress lines)."""
     out = subprocess.run(command(ranks, args), capture_output=True, text=True,
                          cwd=HERE)
     if out.returncode != 0:
         sys.exit("failed: " + " ".join(command(ranks, args)) + "\n" +
                  out.stdout + out.stderr)
-    return out.stdout.strip().splitlines()[-1]
+    return out.stdout.strip().splitlines()
+
+
+def run_row(ranks, args):
+    return run_rows(ranks, args)[-1]
 
 
 def header(args):
@@ -110,6 +121,23 @@ def twist(quick):
                   row["us_per_dof_process"], "us/dof", flush=True)
             rows.append(row)
     write(os.path.join(HERE, "twist.csv"), rows)
+    return rows
+
+
+def p2(quick):
+    names = header(["--p2-preconditioner"])
+    rows = []
+    for n in QUICK["p2"] if quick else P2_SIZES:
+        for ranks in (1, 2):
+            args = ["--p2-preconditioner", "twist", str(n), "2",
+                    "Loading/Number of load steps=1"]
+            for line in run_rows(ranks, args)[-4:]:
+                row = dict(zip(names, line.split(",")))
+                print("p2", n, ranks, row["dofs"], row["preconditioner"],
+                      "setup", row["t_setup"], "cg", row["cg_iterations"],
+                      "solve", row["t_solve"], flush=True)
+                rows.append(row)
+    write(os.path.join(HERE, "p2_preconditioner.csv"), rows)
     return rows
 
 
@@ -195,13 +223,15 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--plot", action="store_true")
-    parser.add_argument("--only", choices=["stages", "twist"])
+    parser.add_argument("--only", choices=["stages", "twist", "p2"])
     args = parser.parse_args()
     if not args.plot:
         if args.only in (None, "stages"):
             stages(args.quick)
         if args.only in (None, "twist"):
             twist(args.quick)
+        if args.only in (None, "p2"):
+            p2(args.quick)
     plot()
 
 

@@ -116,6 +116,15 @@ namespace hyperelastic
     why_no_potential() const override;
     double
     directional_derivative() const override;
+    /// The predictor's update inverts cells of a state without inverted
+    /// ones (a large prescribed increment, the tangent's linear extension
+    /// far outside its range: the one-step crush): the increment extended
+    /// with linear elasticity at zero Poisson's ratio at rest (which moves
+    /// a clamped block's interior with its ends instead of bulging it
+    /// through itself) replaces it if its energy is lower. Displacement
+    /// formulation, models defined at J <= 0, with a potential.
+    bool
+    soften_inverting_predictor(unsigned int &linear_iterations) override;
     double
     largest_feasible_step() override;
     TrialPoint
@@ -195,6 +204,8 @@ namespace hyperelastic
     const dealii::AffineConstraints<double> *active_constraints = nullptr;
 
     MatrixType tangent;
+    /// soften_inverting_predictor()'s system (empty until first needed).
+    MatrixType extension;
     /// u: the current iterate; update: Newton's direction; trial: the
     /// line search's candidate u + alpha update; u_ghosted: whichever of u
     /// and trial was evaluated last, with ghost entries.

@@ -5,6 +5,8 @@
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/formulation/displacement_formulation.h>
 #include <hyperelastic/formulation/formulation_registry.h>
+#include <hyperelastic/solvers/linear_solver.h>
+#include <hyperelastic/solvers/two_level_preconditioner.h>
 
 #include <sstream>
 
@@ -14,7 +16,24 @@ namespace hyperelastic
   DisplacementFormulation<dim>::DisplacementFormulation(
     const Parameters &parameters)
       : degree(parameters.problem.fe_degree)
+      , two_level(parameters.problem.fe_degree == 2 &&
+                  parameters.linear_solver.type == LinearSolverType::cg_amg &&
+                  parameters.linear_solver.p2_two_level)
   {
+  }
+
+  template <int dim>
+  void
+  DisplacementFormulation<dim>::configure_linear_solver(
+    LinearSolver &solver,
+    const dealii::DoFHandler<dim> &dof_handler,
+    const dealii::Mapping<dim> &,
+    const Material<dim> &,
+    const dealii::IndexSet &) const
+  {
+    if (two_level)
+      solver.set_preconditioner(
+        std::make_unique<TwoLevelPreconditioner<dim>>(dof_handler, 2));
   }
 
   template <int dim>

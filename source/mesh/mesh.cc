@@ -47,6 +47,26 @@ namespace hyperelastic
 
   namespace
   {
+    /// The triangulation of the checked cells of mesh file @p file; what
+    /// deal.II still rejects becomes an input error naming the file.
+    template <int dim>
+    void
+    triangulate_checked_mesh(const std::string      &file,
+                             const CheckedMesh<dim> &mesh,
+                             Triangulation<dim>     &tria)
+    {
+      try
+        {
+          tria.create_triangulation(mesh.vertices, mesh.cells, mesh.boundary);
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError("cannot read mesh file '" + file +
+                           "' as a gmsh mesh of dimension " +
+                           std::to_string(dim) + ": " + exception_message(e));
+        }
+    }
+
     /// The generated box; its cells are checked as deal.II made them
     /// (extreme aspect ratios can make them flat).
     template <int dim>
@@ -136,19 +156,7 @@ namespace hyperelastic
             if (!from_cells && parameters.source == MeshSource::file)
               {
                 Timer timer;
-                try
-                  {
-                    serial.create_triangulation(mesh.vertices,
-                                                mesh.cells,
-                                                mesh.boundary);
-                  }
-                catch (const std::exception &e)
-                  {
-                    throw InputError(
-                      "cannot read mesh file '" + parameters.file +
-                      "' as a gmsh mesh of dimension " + std::to_string(dim) +
-                      ": " + exception_message(e));
-                  }
+                triangulate_checked_mesh(parameters.file, mesh, serial);
                 mesh = CheckedMesh<dim>();
                 stats.build_time += timer.wall_time();
               }
@@ -297,16 +305,7 @@ namespace hyperelastic
         GridTools::delete_unused_vertices(mesh.vertices,
                                           mesh.cells,
                                           mesh.boundary);
-        try
-          {
-            tria.create_triangulation(mesh.vertices, mesh.cells, mesh.boundary);
-          }
-        catch (const std::exception &e)
-          {
-            throw InputError("cannot read mesh file '" + parameters.file +
-                             "' as a gmsh mesh of dimension " +
-                             std::to_string(dim) + ": " + exception_message(e));
-          }
+        triangulate_checked_mesh(parameters.file, mesh, tria);
         stats.distribute_time = timer.wall_time();
       }
     Timer timer;

@@ -66,7 +66,7 @@ namespace hyperelastic
     if (!amg_built || rebuild_requested ||
         parameters.amg_rebuild_growth == 0. ||
         &A.trilinos_matrix() != amg_matrix)
-      build_amg(A, true);
+      build_amg(A, true, true);
   }
 
   std::string
@@ -74,6 +74,9 @@ namespace hyperelastic
   {
     if (parameters.type == LinearSolverType::direct)
       return parameters.direct_solver + " (direct)";
+    if (replacement)
+      return krylov_name() + " with " + replacement->description() +
+             (symmetric ? "" : "; the tangent is not symmetric");
     if (saddle_point)
       return "GMRES with a block-triangular preconditioner (ML AMG with "
              "rigid-body modes on the displacement block, lumped pressure "
@@ -84,11 +87,23 @@ namespace hyperelastic
 
   void
   LinearSolver::build_amg(const TrilinosWrappers::SparseMatrix &A,
-                          const bool may_reuse_aggregates)
+                          const bool may_reuse_aggregates,
+                          const bool may_use_replacement)
   {
+    const void *matrix = &A.trilinos_matrix();
+    replacement_in_use = replacement && may_use_replacement;
+    if (replacement_in_use)
+      {
+        replacement->initialize(A);
+        amg_built         = true;
+        amg_matrix        = matrix;
+        rebuild_requested = false;
+        baseline_rate     = -1.;
+        ++n_setups;
+        return;
+      }
     if (saddle_point)
       saddle_point->extract_displacement_block(A);
-    const void *matrix = &A.trilinos_matrix();
     if (may_reuse_aggregates && parameters.amg_reuse_aggregates && amg_built &&
         matrix == amg_matrix)
       {
@@ -188,17 +203,23 @@ namespace hyperelastic
                                      std::ceil(3. * rate_limit * decades));
     SolverControl control    = run_cg(A, x, b, relative_tolerance, limit);
     unsigned int  iterations = control.last_step();
+    // Builds anew for this tangent and solves once more (the same decision
+    // on every rank: CG's counts are global).
+    const auto retry = [&](const bool with_replacement) {
+      build_amg(A, false, with_replacement);
+      x = 0.;
+      control = run_cg(A, x, b, relative_tolerance, parameters.max_iterations);
+      iterations += control.last_step();
+      baseline_rate = control.last_step() / decades;
+    };
+    // An old hierarchy failed: a new one.
     if (control.last_check() != SolverControl::success && !fresh)
-      {
-        // Build anew for this tangent and try once more (the same decision
-        // on every rank: CG's counts are global).
-        build_amg(A, false);
-        x = 0.;
-        control =
-          run_cg(A, x, b, relative_tolerance, parameters.max_iterations);
-        iterations += control.last_step();
-        baseline_rate = control.last_step() / decades;
-      }
+      retry(true);
+    // The replacement (two-level) failed for this tangent (CG near a limit
+    // point, where the tangent is nearly singular or indefinite): ML AMG on
+    // the whole tangent, until the next rebuild.
+    if (control.last_check() != SolverControl::success && replacement_in_use)
+      retry(false);
     if (control.last_check() != SolverControl::success)
       {
         std::ostringstream message;
@@ -218,6 +239,30 @@ namespace hyperelastic
     return iterations;
   }
 
+  template <typename Preconditioner>
+  void
+  LinearSolver::krylov(const TrilinosWrappers::SparseMatrix &A,
+                       TrilinosWrappers::MPI::Vector        &x,
+                       const TrilinosWrappers::MPI::Vector  &b,
+                       const Preconditioner                 &preconditioner,
+                       SolverControl                        &control) const
+  {
+    if (symmetric)
+      SolverCG<TrilinosWrappers::MPI::Vector>(control).solve(A,
+                                                             x,
+                                                             b,
+                                                             preconditioner);
+    else
+      {
+        // Restarted GMRES; right preconditioning, so that the residual it
+        // tests is the true one, as for CG.
+        SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData data(50,
+                                                                        true);
+        SolverGMRES<TrilinosWrappers::MPI::Vector>(control, data)
+          .solve(A, x, b, preconditioner);
+      }
+  }
+
   SolverControl
   LinearSolver::run_cg(const TrilinosWrappers::SparseMatrix &A,
                        TrilinosWrappers::MPI::Vector        &x,
@@ -235,17 +280,10 @@ namespace hyperelastic
             SolverGMRES<TrilinosWrappers::MPI::Vector>(control, data)
               .solve(A, x, b, *saddle_point);
           }
-        else if (symmetric)
-          SolverCG<TrilinosWrappers::MPI::Vector>(control).solve(A, x, b, amg);
+        else if (replacement_in_use)
+          krylov(A, x, b, *replacement, control);
         else
-          {
-            // Restarted GMRES; right preconditioning, so that the residual it
-            // tests is the true one, as for CG.
-            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData data(
-              50, true);
-            SolverGMRES<TrilinosWrappers::MPI::Vector>(control, data)
-              .solve(A, x, b, amg);
-          }
+          krylov(A, x, b, amg, control);
       }
     catch (const SolverControl::NoConvergence &)
       {

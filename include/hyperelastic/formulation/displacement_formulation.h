@@ -25,6 +25,15 @@ namespace hyperelastic
     std::string
     warning(const Material<dim> &material) const override;
 
+    /// P2 with CG + AMG: the two-level P2 -> P1 preconditioner, unless
+    /// 'Linear solver/P2 preconditioner = AMG'.
+    void
+    configure_linear_solver(LinearSolver                  &solver,
+                            const dealii::DoFHandler<dim> &dof_handler,
+                            const dealii::Mapping<dim>    &mapping,
+                            const Material<dim>           &material,
+                            const dealii::IndexSet &pressure_dofs) const override;
+
     /// The scene checks: an exactly incompressible material needs the
     /// pressure as an unknown.
     static void
@@ -32,5 +41,7 @@ namespace hyperelastic
 
   protected:
     const unsigned int degree;
+    /// Whether P2 solves use the two-level preconditioner.
+    const bool two_level;
   };
 } // namespace hyperelastic

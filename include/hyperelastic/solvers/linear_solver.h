@@ -11,6 +11,7 @@
 
 #include <hyperelastic/solvers/linear_solver_parameters.h>
 #include <hyperelastic/solvers/saddle_point_preconditioner.h>
+#include <hyperelastic/solvers/tangent_preconditioner.h>
 
 #include <memory>
 #include <string>
@@ -56,6 +57,15 @@ namespace hyperelastic
           dealii::TrilinosWrappers::MPI::Vector        &x,
           const dealii::TrilinosWrappers::MPI::Vector  &b,
           double                                        relative_tolerance);
+
+    /// Krylov solves use @p preconditioner instead of ML AMG on the whole
+    /// tangent (the two-level P2 one); it is built when the AMG hierarchy
+    /// would be, and counts as an AMG set-up.
+    void
+    set_preconditioner(std::unique_ptr<TangentPreconditioner> preconditioner)
+    {
+      replacement = std::move(preconditioner);
+    }
 
     /// Whether the matrices to come are symmetric (CG) or not (GMRES);
     /// symmetric by default.
@@ -115,15 +125,22 @@ namespace hyperelastic
     unsigned int                               n_components = 1;
     dealii::TrilinosWrappers::PreconditionAMG  amg;
     std::unique_ptr<SaddlePointPreconditioner> saddle_point;
+    std::unique_ptr<TangentPreconditioner>     replacement;
+    /// Whether the current hierarchy is the replacement's (false after it
+    /// failed for a tangent, until the next rebuild).
+    bool replacement_in_use = false;
     /// The displacement rows of null_space (saddle point only).
     std::vector<double> block_null_space;
 
-    /// Computes the hierarchy for @p A now: refreshed on the aggregates of
-    /// the last full build if @p may_reuse_aggregates, the parameters allow
-    /// it and the matrix is the same object; otherwise built anew.
+    /// Computes the hierarchy for @p A now: the replacement preconditioner
+    /// if there is one and @p may_use_replacement; else ML, refreshed on
+    /// the aggregates of the last full build if @p may_reuse_aggregates,
+    /// the parameters allow it and the matrix is the same object; otherwise
+    /// built anew.
     void
     build_amg(const dealii::TrilinosWrappers::SparseMatrix &A,
-              bool may_reuse_aggregates);
+              bool may_reuse_aggregates,
+              bool may_use_replacement);
 
     /// CG with the current hierarchy; the control tells how it ended.
     dealii::SolverControl
@@ -132,6 +149,15 @@ namespace hyperelastic
            const dealii::TrilinosWrappers::MPI::Vector  &b,
            double                                        tolerance,
            unsigned int                                  max_iterations) const;
+
+    /// CG (GMRES if not symmetric) with @p preconditioner.
+    template <typename Preconditioner>
+    void
+    krylov(const dealii::TrilinosWrappers::SparseMatrix &A,
+           dealii::TrilinosWrappers::MPI::Vector        &x,
+           const dealii::TrilinosWrappers::MPI::Vector  &b,
+           const Preconditioner                         &preconditioner,
+           dealii::SolverControl                        &control) const;
 
     bool         amg_built         = false;
     bool         rebuild_requested = false;

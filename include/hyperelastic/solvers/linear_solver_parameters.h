@@ -35,6 +35,10 @@ namespace hyperelastic
     /// Refresh a hierarchy for a new tangent on the aggregates of its first
     /// build (ML's ReComputePreconditioner) instead of aggregating anew.
     bool amg_reuse_aggregates = false;
+    /// P2 displacement tangents with CG + AMG: the two-level P2 -> P1
+    /// preconditioner (TwoLevelPreconditioner) instead of ML on the P2
+    /// matrix.
+    bool p2_two_level = true;
 
     static void
     declare(ParameterHandler &prm);

@@ -24,6 +24,10 @@ namespace hyperelastic
     bool   projected = false; ///< tangent made semi-definite everywhere
     /// dP/dF projected at the quadrature points with J <= 0 only.
     bool projected_where_inverted = false;
+    /// The predictor's update inverted cells and was replaced by the
+    /// increment extended at zero Poisson's ratio
+    /// (NonlinearSystem::soften_inverting_predictor).
+    bool softened_predictor = false;
     /// Whether the energy had to decrease (sufficient decrease) in this
     /// iteration's line search; false while prescribed displacements are
     /// still being imposed or without a line search.

@@ -108,6 +108,19 @@ namespace hyperelastic
       return 1.;
     }
 
+    /// Called by the automatic tangent policy after the solve of the
+    /// linearization that imposes the constraint increment (a load step's
+    /// predictor): if that update would invert cells of a state that has
+    /// none, the system may replace it by a gentler extension of the
+    /// increment into the body. Returns whether it did; @p
+    /// linear_iterations gets the Krylov iterations spent on trying.
+    virtual bool
+    soften_inverting_predictor(unsigned int &linear_iterations)
+    {
+      (void)linear_iterations;
+      return false;
+    }
+
     /// What evaluate_trial() must find out about a trial iterate.
     enum class TrialCheck
     {
