@@ -100,11 +100,13 @@ namespace hyperelastic
       "smoothing (degree 2, Jacobi-preconditioned) on the P2 tangent and ML "
       "AMG (as configured here, rigid-body modes) on its Galerkin projection "
       "onto the P1 field of the same mesh; 'AMG': ML on the P2 tangent "
-      "directly. Measured on the twisted bar's last tangent, 1 rank, 7e3 to "
-      "4e5 unknowns (benchmarks/setup/p2_preconditioner.csv): 'two-level' "
-      "builds in a fifth to a tenth of the time and solves in fewer "
-      "iterations, hence the default. The mixed formulation keeps its own "
-      "block preconditioner.");
+      "directly. Measured on the twisted bar's last tangent, 7e3 to 1.6e5 "
+      "unknowns (benchmarks/setup/p2_preconditioner.csv): 'two-level' "
+      "builds in a fifth to a tenth of ML's time and needs about a third "
+      "of its CG iterations (3-7x faster in all), hence the default. If CG "
+      "fails with it for a tangent, that solve is repeated with ML on the "
+      "whole tangent. The mixed formulation keeps its own block "
+      "preconditioner.");
     prm.leave_subsection();
   }
 
