@@ -26,12 +26,27 @@ namespace hyperelastic
     SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
     stiffness.reinit(owned, owned, dsp, comm);
 
-    const auto linear = create_material<dim>("linear elastic", moduli);
-    VectorType rest(owned, relevant, comm), rhs(owned, comm);
+    VectorType                rhs(owned, comm);
     AffineConstraints<double> none;
     none.close();
+    assemble_rest_system(dof_handler, mapping, moduli, none, stiffness, rhs);
+  }
+
+  template <int dim>
+  void
+  assemble_rest_system(const DoFHandler<dim>           &dof_handler,
+                       const Mapping<dim>              &mapping,
+                       const LameParameters            &moduli,
+                       const AffineConstraints<double> &constraints,
+                       MatrixType                      &matrix,
+                       VectorType                      &rhs)
+  {
+    const auto linear = create_material<dim>("linear elastic", moduli);
+    const VectorType rest(dof_handler.locally_owned_dofs(),
+                          DoFTools::extract_locally_relevant_dofs(dof_handler),
+                          dof_handler.get_communicator());
     GenericAssembler<dim>(dof_handler, mapping, *linear)
-      .system(rest, none, TangentProjection::none, stiffness, rhs);
+      .system(rest, constraints, TangentProjection::none, matrix, rhs);
   }
 
   template void
@@ -44,4 +59,18 @@ namespace hyperelastic
                              const Mapping<3> &,
                              const LameParameters &,
                              MatrixType &);
+  template void
+  assemble_rest_system<2>(const DoFHandler<2> &,
+                          const Mapping<2> &,
+                          const LameParameters &,
+                          const AffineConstraints<double> &,
+                          MatrixType &,
+                          VectorType &);
+  template void
+  assemble_rest_system<3>(const DoFHandler<3> &,
+                          const Mapping<3> &,
+                          const LameParameters &,
+                          const AffineConstraints<double> &,
+                          MatrixType &,
+                          VectorType &);
 } // namespace hyperelastic

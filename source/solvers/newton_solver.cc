@@ -243,6 +243,12 @@ namespace hyperelastic
                                   result.history[budget_start].residual))
           projection = TangentProjection::inverted_points;
         unsigned int linear_its = 0;
+        // Whether @p p projects anything at this iterate: the points with
+        // J <= 0 only matter once the iterate has some.
+        const auto projects_inverted_points = [&](const TangentProjection p) {
+          return p == TangentProjection::inverted_points &&
+                 !result.history.empty() && result.history.back().min_J <= 0.;
+        };
         const double eisenstat_walker = forcing_term(result.history, target);
         const bool   predictor        = moving_constraints;
         for (;;)
@@ -253,12 +259,10 @@ namespace hyperelastic
             // cells, loose solves give directions that wander between
             // minima (the crush of stress test 25: 36 iterations inexact,
             // 18 exact).
-            const bool projecting =
-              projection == TangentProjection::every_point ||
-              (projection == TangentProjection::inverted_points &&
-               !result.history.empty() && result.history.back().min_J <= 0.);
             row.forcing =
-              (system.is_linear() || predictor || projecting)
+              (system.is_linear() || predictor ||
+               projection == TangentProjection::every_point ||
+               projects_inverted_points(projection))
                 ? 0.
                 : eisenstat_walker;
             std::string failure;
@@ -308,9 +312,7 @@ namespace hyperelastic
                 row.projected = true;
               }
           }
-        row.projected_where_inverted =
-          projection == TangentProjection::inverted_points &&
-          !result.history.empty() && result.history.back().min_J <= 0.;
+        row.projected_where_inverted = projects_inverted_points(projection);
         row.iteration         = it;
         row.linear_iterations = linear_its;
         row.update            = system.accept_trial();
