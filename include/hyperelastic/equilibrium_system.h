@@ -215,6 +215,8 @@ namespace hyperelastic
     double     step_length         = 1.; ///< of the last evaluated trial
     /// Running maxima of the force and displacement norms (Newton's scales).
     double                           force_scale    = 0.;
+    /// The load terms' ForceSize at the last force assembly.
+    ForceSize force_size;
     double                           solution_size  = 0.;
     double                           min_J          = 1.;
     dealii::types::global_cell_index inverted_cells = 0;

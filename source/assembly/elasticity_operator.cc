@@ -4,6 +4,7 @@
 #include <hyperelastic/assembly/p1_assembler.h>
 #include <hyperelastic/loads/load_terms.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace hyperelastic
@@ -70,7 +71,7 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
+  ForceSize
   ElasticityOperator<dim>::load_forces(const VectorType &u,
                                        const double      t,
                                        VectorType       &external) const
@@ -79,24 +80,46 @@ namespace hyperelastic
       external = dead_forces(t);
     else
       external = 0.;
+    ForceSize size;
     if (!has_live_terms)
-      return;
+      return size;
     for (const auto &term : terms)
       if (term->depends_on_solution())
-        term->add_forces(u, t, external);
+        {
+          const ForceSize s = term->add_forces(u, t, external);
+          size.magnitude    = std::max(size.magnitude, s.magnitude);
+          size.round_off += s.round_off;
+        }
     external.compress(VectorOperation::add);
+    return size;
   }
 
   template <int dim>
-  double
+  ForceSize
   ElasticityOperator<dim>::assemble_forces(const VectorType &u,
                                            const double      t,
                                            VectorType       &internal,
                                            VectorType       &external) const
   {
     const double noise = (p1 ? *p1 : *generic).internal_forces(u, internal);
-    load_forces(u, t, external);
-    return noise;
+    ForceSize    size  = load_forces(u, t, external);
+    size.round_off += noise;
+    return size;
+  }
+
+  template <int dim>
+  void
+  ElasticityOperator<dim>::end_state_forces(const VectorType &u,
+                                            const double      t,
+                                            VectorType       &forces)
+  {
+    // The difference between the load forces with and without those terms.
+    VectorType without(forces);
+    set_end_state_map(1., 0.);
+    load_forces(u, t, without);
+    set_end_state_map(1., 1.);
+    load_forces(u, t, forces);
+    forces -= without;
   }
 
   template <int dim>

@@ -327,10 +327,11 @@ namespace hyperelastic
         for (unsigned int k = 0; k < obstacles.size(); ++k)
           {
             PairState p = pair(a, k, x, where[k], eps, with_stiffness);
-            // The potential V(x_end) / c in the solved state: gradient
-            // V'(x_end), Hessian c V''(x_end).
-            p.energy /= end_factor;
-            p.stiffness *= end_factor;
+            // The potential w V(x_end) / c in the solved state: gradient
+            // w V'(x_end), Hessian w c V''(x_end).
+            p.energy *= force_weight / end_factor;
+            p.force *= force_weight;
+            p.stiffness *= force_weight * end_factor;
             crossed = crossed || !(p.distance > 0.);
             f(a, k, p);
           }
@@ -368,13 +369,14 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
+  ForceSize
   ObstacleContact<dim>::add_forces(const VectorType &u,
                                    const double      t,
                                    VectorType       &forces) const
   {
     const auto scope = timed_section(timer, "contact");
     contact_forces(u, t, forces);
+    return {};
   }
 
   template <int dim>
@@ -543,6 +545,7 @@ namespace hyperelastic
     reached         = t_start;
     lagging_updates = 0;
     end_factor      = 1.;
+    force_weight    = 1.;
     start_positions.resize(vertices.size());
     for (unsigned int a = 0; a < vertices.size(); ++a)
       start_positions[a] = position(a, u);

@@ -30,6 +30,26 @@ namespace hyperelastic
     /// many d_hat, so that a few iterates more fit in before it grows.
     constexpr double coupling_reach = 4.;
 
+    /// The potential w V(x_end) / c of a pair in the step's solved state
+    /// (end-state map c, force weight w; LoadTerm::set_end_state_map) from
+    /// the pair's barrier @p b at x_end: energy w / c, gradient w, Hessian
+    /// (@p order 2) w c times those.
+    template <std::size_t n>
+    void
+    to_solved_state(PairBarrier<n>    &b,
+                    const double       c,
+                    const double       w,
+                    const unsigned int order)
+    {
+      b.energy *= w / c;
+      for (double &g : b.gradient)
+        g *= w;
+      if (order == 2)
+        for (auto &row : b.hessian)
+          for (double &v : row)
+            v *= w * c;
+    }
+
     /// Adds the time since construction to a sum.
     class Stopwatch
     {
@@ -538,13 +558,7 @@ namespace hyperelastic
           }
         if (b.distance >= d_hat)
           continue;
-        // The potential V(x_end) / c in the solved state: gradient
-        // V'(x_end), Hessian c V''(x_end).
-        b.energy /= end_factor;
-        if (order == 2)
-          for (auto &row : b.hessian)
-            for (double &v : row)
-              v *= end_factor;
+        to_solved_state(b, end_factor, force_weight, order);
         f(pair, b);
       }
     if (min_distance)
@@ -581,13 +595,14 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
+  ForceSize
   SelfContact<dim>::add_forces(const VectorType &u,
                                const double      t,
                                VectorType       &forces) const
   {
     const auto scope = timed_section(timer, "contact");
     add_pair_forces(u, t, forces);
+    return {};
   }
 
   template <int dim>
@@ -728,6 +743,7 @@ namespace hyperelastic
   SelfContact<dim>::begin_step(const VectorType &u, const double t_start)
   {
     end_factor      = 1.;
+    force_weight    = 1.;
     step_start      = t_start;
     lagging_updates = 0;
     owned_start.resize(n_owned);
@@ -815,11 +831,7 @@ namespace hyperelastic
           continue;
         PairBarrier<n_coordinates> b = pair_friction<dim>(
           x, x0, l.beta, l.normal, friction * l.normal_force, eps, order);
-        b.energy /= end_factor;
-        if (order == 2)
-          for (auto &row : b.hessian)
-            for (double &v : row)
-              v *= end_factor;
+        to_solved_state(b, end_factor, force_weight, order);
         f(l.pair, b);
       }
   }

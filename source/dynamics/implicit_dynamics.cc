@@ -50,7 +50,12 @@ namespace hyperelastic
     const dealii::IndexSet &owned = dof_handler.locally_owned_dofs();
     const MPI_Comm          comm  = dof_handler.get_communicator();
     for (VectorType *v :
-         {&velocity, &acceleration, &new_velocity, &new_acceleration, &scratch})
+         {&velocity,
+          &acceleration,
+          &new_velocity,
+          &new_acceleration,
+          &scratch,
+          &correction})
       v->reinit(owned, comm);
     if (!parameters.initial_velocity.empty())
       {
@@ -72,8 +77,12 @@ namespace hyperelastic
       {
         // M a_0 = f_ext(0) - f_int(u_0) on the free dofs (the inertia term's
         // scale is still 0); supported dofs start at rest.
+        // Contact forces are not part of it (they take the whole impulse
+        // of each step: time_integrator.h).
         VectorType internal(owned, comm);
         context.elasticity.assemble_forces(u, 0., internal, scratch);
+        scratch -= internal;
+        context.elasticity.end_state_forces(u, 0., internal);
         scratch -= internal;
         inertia->solve_mass(scratch,
                             context.homogeneous_constraints,
@@ -86,8 +95,8 @@ namespace hyperelastic
   ImplicitDynamics<dim>::begin_step(const double          t,
                                     const ConvergedState &converged,
                                     const ConvergedState &,
-                                    VectorType &,
-                                    VectorType &)
+                                    VectorType &u,
+                                    VectorType &u_ghosted)
   {
     // The step starts from the last converged state (u = u_n).
     step_end_time  = t;
@@ -95,6 +104,27 @@ namespace hyperelastic
     double       c = 0.;
     integrator->step_target(h, converged.u, velocity, acceleration, c, scratch);
     inertia->set_step(c, scratch);
+    // Newton starts where the step would end if the acceleration stayed
+    // a_n: c M (u - w) = M a_n, u = w + a_n / c (backward Euler u_n + h v_n
+    // + h^2 a_n, Newmark u_n + h v_n + h^2/2 a_n, midpoint's solved state
+    // u_n + h/2 v_n + h^2/4 a_n). A rigid motion under constant forces
+    // starts at its answer, however far it has gone (issue 41). Not with
+    // contact: the guess could cross an obstacle, and the iterates must
+    // stay on its side.
+    // A guess outside the model's domain (a cell inverted by a violent
+    // extrapolation) is not taken either.
+    if (!context.parameters.contact.active() && c > 0.)
+      {
+        u = scratch;
+        u.add(1. / c, acceleration);
+        u_ghosted = u;
+        if (!context.material.defined_for_inverted_elements() &&
+            !(context.elasticity.evaluate(u_ghosted, t, false).min_J > 0.))
+          {
+            u         = converged.u;
+            u_ghosted = u;
+          }
+      }
     if (stiffness_damping)
       {
         double kappa = 0.;
@@ -105,7 +135,8 @@ namespace hyperelastic
     // Terms held at the end of the step (contact) map the solved state to
     // it: implicit midpoint solves half way.
     const double solved = integrator->evaluation_time(converged.load_factor, t);
-    context.elasticity.set_end_state_map(h / (solved - converged.load_factor));
+    context.elasticity.set_end_state_map(h / (solved - converged.load_factor),
+                                         integrator->end_force_weight());
     // A model with history (viscoelasticity): the step lasts h.
     context.elasticity.begin_material_step(h);
     return solved;
@@ -119,7 +150,7 @@ namespace hyperelastic
                                      VectorType           &u_ghosted)
   {
     // The accepted state is the end state: the terms evaluate it as it is.
-    context.elasticity.set_end_state_map(1.);
+    context.elasticity.set_end_state_map(1., 1.);
     if (!converged.valid)
       return solved;
     // The step from converged (t_n, u_n) to its end (implicit midpoint: from
@@ -133,6 +164,20 @@ namespace hyperelastic
                             u,
                             new_velocity,
                             new_acceleration);
+    if (integrator->end_force_weight() != 1.)
+      {
+        // Newmark: the acceleration kept is that of the forces other than
+        // contact, which took the step's whole impulse (time_integrator.h).
+        context.elasticity.end_state_forces(u_ghosted, step_end_time, scratch);
+        if (scratch.linfty_norm() > 0.)
+          {
+            inertia->solve_mass(scratch,
+                                context.homogeneous_constraints,
+                                correction);
+            new_acceleration.add(-integrator->end_force_weight(),
+                                 correction);
+          }
+      }
     velocity.swap(new_velocity);
     acceleration.swap(new_acceleration);
     velocity_ghosted = velocity;

@@ -39,7 +39,7 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
+  ForceSize
   StiffnessDampingTerm<dim>::add_forces(const VectorType &u,
                                         const double,
                                         VectorType &forces) const
@@ -53,6 +53,7 @@ namespace hyperelastic
         values.push_back(-scale * product(i));
       }
     forces.add(indices, values);
+    return {};
   }
 
   template <int dim>

@@ -55,7 +55,7 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
+  ForceSize
   BodyForce<dim>::add_forces(const VectorType &,
                              const double t,
                              VectorType  &forces) const
@@ -80,6 +80,7 @@ namespace hyperelastic
           forces.add(dofs, cell_forces);
         }
     throw_if_load_not_finite(!finite, name(), dof_handler.get_communicator());
+    return {};
   }
 
   template <int dim>
@@ -98,7 +99,7 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
+  ForceSize
   DeadTraction<dim>::add_forces(const VectorType &,
                                 const double t,
                                 VectorType  &forces) const
@@ -127,6 +128,7 @@ namespace hyperelastic
               forces.add(dofs, cell_forces);
             }
     throw_if_load_not_finite(!finite, name(), dof_handler.get_communicator());
+    return {};
   }
 
   template class BodyForce<2>;

@@ -168,7 +168,7 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
+  ForceSize
   FollowerPressure<dim>::add_forces(const VectorType &u,
                                     const double      t,
                                     VectorType       &forces) const
@@ -185,6 +185,7 @@ namespace hyperelastic
         }
       forces.add(data.dofs, cell_forces);
     });
+    return {};
   }
 
   template <int dim>

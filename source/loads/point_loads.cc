@@ -48,7 +48,7 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
+  ForceSize
   PointLoads<dim>::add_forces(const VectorType & /*u*/,
                               const double t,
                               VectorType  &forces) const
@@ -71,6 +71,7 @@ namespace hyperelastic
       throw InputError("scene entry '" + loads[non_finite].subsection +
                        "/Force' is not a finite number at load factor t = " +
                        std::to_string(t));
+    return {};
   }
 
   template class PointLoads<2>;

@@ -61,13 +61,11 @@ namespace hyperelastic
           throw ConvergenceFailure(
             "the residual is not finite (an element may have inverted with "
             "a model undefined there)");
-        const double target =
-          std::max({newton.absolute_residual_tolerance,
-                    newton.relative_residual_tolerance * norms.scale,
-                    norms.noise});
-        if (it > 1 && norms.residual <= target &&
-            last_update <= newton.update_tolerance *
-                             std::max(system.solution_scale(), trial.l2_norm()))
+        if (it > 1 &&
+            ConvergenceTest(newton).converged(
+              norms,
+              last_update,
+              std::max(system.solution_scale(), trial.l2_norm())))
           {
             result.history.back().residual = norms.residual;
             return result;

@@ -33,8 +33,10 @@ namespace hyperelastic
                       Double(0),
                       "... or below this times the largest l2 norm of the "
                       "internal or external force vector seen so far in the "
-                      "run (all degrees of freedom, so reactions count), "
-                      "and ...");
+                      "run (all degrees of freedom, so reactions count; in "
+                      "dynamics also of the inertial forces, which cancel "
+                      "gravity in a free fall), or below the round-off "
+                      "level of the residual's evaluation, and ...");
     prm.declare_entry("Update tolerance",
                       "1e-8",
                       Double(0),

@@ -201,7 +201,8 @@ namespace hyperelastic
   NewtonResult
   NewtonSolver::solve(NonlinearSystem &system) const
   {
-    NewtonResult result;
+    const ConvergenceTest convergence(parameters);
+    NewtonResult          result;
     result.residual_merit = parameters.line_search && !system.has_potential();
     if (verbose)
       {
@@ -335,22 +336,13 @@ namespace hyperelastic
             "have inverted with a model undefined there)\n" +
             table(result));
 
-        // Converged when the residual is small, in absolute terms or
-        // relative to the forces of the run, and the last update is small
-        // relative to the displacements of the run. Both tests are needed:
-        // with small forces (soft materials, small bodies) a residual test
-        // alone would accept an unconverged state.
-        target = std::max({parameters.absolute_residual_tolerance,
-                           parameters.relative_residual_tolerance * norms.scale,
-                           norms.noise});
-        const bool residual_small = norms.residual <= target;
-        const bool update_small =
-          row.update <= parameters.update_tolerance * system.solution_scale();
+        target = convergence.residual_target(norms);
         // A linear problem is solved by its first full step (to the linear
         // solver's tolerance): a second solve would only polish round-off.
         const bool linear_done = system.is_linear() && row.step_length == 1.;
         if (!moving_constraints &&
-            ((residual_small && update_small) || linear_done))
+            (convergence.converged(norms, row.update, system.solution_scale()) ||
+             linear_done))
           {
             if (system.update_lagged_quantities())
               {

@@ -111,9 +111,11 @@ namespace hyperelastic
 
     /// Internal forces f_int(u) and load forces g(u, t), unconstrained (both
     /// compressed, owned entries only). u must have ghost entries. Returns
-    /// an estimate of the round-off level of the l2 norm of f_int:
-    /// residuals below it cannot be resolved.
-    double
+    /// an estimate of the round-off level of the l2 norm of f_int - g
+    /// (round_off: residuals below it cannot be resolved) and the largest
+    /// size of a load term's forces that cancel others in g (magnitude:
+    /// inertia in a free fall; 0 without such a term).
+    ForceSize
     assemble_forces(const VectorType &u,
                     const double      t,
                     VectorType       &internal,
@@ -181,11 +183,18 @@ namespace hyperelastic
         term->begin_step(u, t_start);
     }
     void
-    set_end_state_map(const double c)
+    set_end_state_map(const double c, const double weight)
     {
       for (const auto &term : terms)
-        term->set_end_state_map(c);
+        term->set_end_state_map(c, weight);
     }
+    /// The forces of the terms held at the end of the step (those that
+    /// scale with set_end_state_map's weight: contact) at @p u (ghosted)
+    /// and @p t, at weight 1 and the map c = 1 (compressed, owned entries);
+    /// the map is left at (1, 1). Collective.
+    void
+    end_state_forces(const VectorType &u, double t, VectorType &forces);
+
     bool
     moving(const double t)
     {
@@ -222,8 +231,9 @@ namespace hyperelastic
     const VectorType &
     dead_forces(double t) const;
 
-    /// external = g(u, t) of all terms (compressed).
-    void
+    /// external = g(u, t) of all terms (compressed); the terms' ForceSize
+    /// (the largest magnitude, the summed round-off).
+    ForceSize
     load_forces(const VectorType &u, double t, VectorType &external) const;
 
     const dealii::DoFHandler<dim> &dof_handler;

@@ -92,7 +92,7 @@ namespace hyperelastic
 
     /// Throws ConvergenceFailure on every rank if a vertex is on the wrong
     /// side of an obstacle (an obstacle moved into the body over the step).
-    void
+    ForceSize
     add_forces(const VectorType &u,
                double            t,
                VectorType       &forces) const override;
@@ -118,9 +118,10 @@ namespace hyperelastic
     void
     begin_step(const VectorType &u, double t_start) override;
     void
-    set_end_state_map(double c) override
+    set_end_state_map(double c, double weight) override
     {
-      end_factor = c;
+      end_factor   = c;
+      force_weight = weight;
     }
     bool
     moving(double t) override;
@@ -298,6 +299,7 @@ namespace hyperelastic
     unsigned int                    lagging_updates = 0;
     /// c of the end-state map (set_end_state_map).
     double               end_factor = 1.;
+    double               force_weight = 1.; ///< of set_end_state_map()
     dealii::TimerOutput *timer      = nullptr;
   };
 } // namespace hyperelastic

@@ -98,7 +98,7 @@ namespace hyperelastic
     }
 
     /// Throws ConvergenceFailure on every rank if two primitives touch.
-    void
+    ForceSize
     add_forces(const VectorType &u,
                double            t,
                VectorType       &forces) const override;
@@ -133,9 +133,10 @@ namespace hyperelastic
     void
     begin_step(const VectorType &u, double t_start) override;
     void
-    set_end_state_map(double c) override
+    set_end_state_map(double c, double weight) override
     {
-      end_factor = c;
+      end_factor   = c;
+      force_weight = weight;
     }
 
     /// Friction: lags the normal forces, normals and closest points of the
@@ -356,6 +357,7 @@ namespace hyperelastic
 
     double d_hat = 0., kappa = 0.;
     double end_factor    = 1.;
+    double force_weight    = 1.; ///< of set_end_state_map()
     bool   project_pairs = false;
     /// The owned boundary vertices' positions at the step's start (the
     /// end-state map, friction's slip), and the step's start time.

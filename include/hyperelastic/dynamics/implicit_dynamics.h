@@ -95,6 +95,8 @@ namespace hyperelastic
     /// Of the last converged state.
     VectorType velocity, acceleration;
     VectorType new_velocity, new_acceleration, scratch;
+    /// Newmark: M^-1 times the contact forces at the end of a step.
+    VectorType correction;
     /// The velocity with ghost entries (momenta and fields).
     VectorType velocity_ghosted;
     /// The end of the time step being solved (the load factor is the time

@@ -48,7 +48,9 @@ namespace hyperelastic
     void
     set_step(double c, const VectorType &w);
 
-    void
+    /// Adds -c M (u - w); returns the norm of these forces and of their
+    /// round-off (a long rigid motion cancels large u and w).
+    ForceSize
     add_forces(const VectorType &u, double t, VectorType &forces) const override;
 
     void
@@ -97,5 +99,7 @@ namespace hyperelastic
     dealii::FullMatrix<double> reference_mass;
     double                     c = 0.;
     VectorType                 target; ///< w, with ghost entries
+    /// Scratch of add_forces(): the term's forces and their round-off.
+    mutable VectorType own_forces, own_round_off;
   };
 } // namespace hyperelastic

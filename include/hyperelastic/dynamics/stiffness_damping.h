@@ -51,7 +51,7 @@ namespace hyperelastic
     void
     set_step(double s, const VectorType &d);
 
-    void
+    ForceSize
     add_forces(const VectorType &u, double t, VectorType &forces) const override;
 
     void

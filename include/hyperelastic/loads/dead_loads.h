@@ -35,7 +35,7 @@ namespace hyperelastic
       return false;
     }
 
-    void
+    ForceSize
     add_forces(const VectorType &u,
                double            t,
                VectorType       &forces) const override;
@@ -89,7 +89,7 @@ namespace hyperelastic
       return false;
     }
 
-    void
+    ForceSize
     add_forces(const VectorType &u,
                double            t,
                VectorType       &forces) const override;

@@ -78,7 +78,7 @@ namespace hyperelastic
       return conservative;
     }
 
-    void
+    ForceSize
     add_forces(const VectorType &u,
                double            t,
                VectorType       &forces) const override;

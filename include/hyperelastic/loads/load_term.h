@@ -18,6 +18,18 @@
 
 namespace hyperelastic
 {
+  /// What Newton's convergence test must know of a term's nodal forces
+  /// beyond their sum (LoadTerm::add_forces): a term whose forces cancel
+  /// others in the sum (inertia against gravity in free fall) gives their
+  /// size, for the relative residual test, and the round-off they carry
+  /// (inertia: c M (u - w) from u and w far larger than their difference),
+  /// for the noise floor. Both are l2 norms; 0: nothing to add.
+  struct ForceSize
+  {
+    double magnitude = 0.;
+    double round_off = 0.;
+  };
+
   template <int dim>
   class LoadTerm
   {
@@ -45,8 +57,9 @@ namespace hyperelastic
     /// Adds the nodal forces g(u, t) to @p forces (owned rows; entries
     /// added to other ranks' rows are sent by the caller's compress()). @p u
     /// has ghost entries. Throws InputError on every rank, naming the entry,
-    /// if the load is not finite somewhere. Collective.
-    virtual void
+    /// if the load is not finite somewhere. Returns the forces' size and
+    /// round-off where they matter (ForceSize; most terms: none). Collective.
+    virtual ForceSize
     add_forces(const VectorType &u, double t, VectorType &forces) const = 0;
 
     /// Adds the load stiffness -dg/du to @p matrix, condensed with the
@@ -133,11 +146,14 @@ namespace hyperelastic
     /// midpoint: c = 2; 1 otherwise), from the u_n and t_n of begin_step().
     /// A term that must hold at the end of the step (contact: no vertex
     /// through an obstacle at the end state) evaluates itself there, with
-    /// the potential V(u_end) / c (whose gradient in u is V'(u_end)).
+    /// the potential @p weight V(u_end) / c (whose gradient in u is
+    /// @p weight V'(u_end)). The weight is the scheme's: Newmark gives the
+    /// contact force the whole step's impulse (weight 2, see
+    /// dynamics/time_integrator.h), the others 1.
     virtual void
-    set_end_state_map(double c)
+    set_end_state_map(double c, double weight)
     {
-      (void)c;
+      (void)c, (void)weight;
     }
 
     /// Whether the term's admissible set has not reached its place at @p t

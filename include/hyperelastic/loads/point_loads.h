@@ -34,7 +34,7 @@ namespace hyperelastic
       return false;
     }
 
-    void
+    ForceSize
     add_forces(const VectorType &u,
                double            t,
                VectorType       &forces) const override;

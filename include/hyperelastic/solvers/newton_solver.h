@@ -7,6 +7,7 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <hyperelastic/base/tangent_projection_mode.h>
+#include <hyperelastic/solvers/convergence_test.h>
 #include <hyperelastic/solvers/newton_parameters.h>
 #include <hyperelastic/solvers/newton_result.h>
 
@@ -16,18 +17,6 @@
 
 namespace hyperelastic
 {
-  /// Norms of the residual at the current iterate.
-  struct ResidualNorms
-  {
-    double residual; ///< on the free (unconstrained) unknowns
-    /// Size of the forces of the run so far, for the relative test (a
-    /// running maximum, so that it does not vanish when loads are removed).
-    double scale;
-    /// Round-off level of the residual (stiff materials: lambda ln J
-    /// computed near J = 1): residuals below it count as zero.
-    double noise = 0.;
-  };
-
   /// What is known of a trial iterate u + alpha du.
   struct TrialPoint
   {
