@@ -500,6 +500,39 @@ namespace
                        1.8);
   }
 
+  /// Problem, Mesh (a box from @p lower to @p upper, corners as the scene
+  /// writes them, with @p divisions along each axis) and a neo-Hookean
+  /// Material of Young's modulus @p E, nu = 0.3.
+  template <int dim>
+  std::string
+  neo_hookean_box(const std::string &lower,
+                  const std::string &upper,
+                  const std::string &divisions,
+                  const std::string &E)
+  {
+    std::string d = divisions;
+    for (int k = 1; k < dim; ++k)
+      d += ", " + divisions;
+    return subsection("Problem", entry("Dimension", std::to_string(dim))) +
+           subsection("Mesh",
+                      entry("Lower corner", lower) +
+                        entry("Upper corner", upper) +
+                        entry("Subdivisions", d)) +
+           subsection("Material",
+                      entry("Model", "neo-Hookean") +
+                        entry("Young's modulus", E) +
+                        entry("Poisson's ratio", "0.3"));
+  }
+
+  /// No files, no printing.
+  std::string
+  quiet_output()
+  {
+    return subsection("Output",
+                      entry("Directory", "dynamics_output") +
+                        entry("Write VTU", "false") + entry("Verbose", "false"));
+  }
+
   /// The free cube of issue 41 (E = 1, 3 x 3 x 3, side 3, density 1)
   /// under gravity 1, falling for @p end with steps of 0.02.
   template <int dim>
@@ -509,23 +542,14 @@ namespace
                const double       end)
   {
     const bool three = dim == 3;
-    return subsection("Problem", entry("Dimension", std::to_string(dim))) +
-           subsection("Mesh",
-                      entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                        entry("Upper corner", three ? "3, 3, 3" : "3, 3") +
-                        entry("Subdivisions", three ? "3, 3, 3" : "3, 3")) +
-           subsection("Material",
-                      entry("Model", "neo-Hookean") +
-                        entry("Young's modulus", "1") +
-                        entry("Poisson's ratio", "0.3")) +
+    return neo_hookean_box<dim>(three ? "0, 0, 0" : "0, 0",
+                                three ? "3, 3, 3" : "3, 3",
+                                "3",
+                                "1") +
            subsection("Loading",
                       entry("Body force", three ? "0; 0; -1" : "0; -1")) +
            (solver == "direct" ? tight_solver("direct") : std::string()) +
-           time_section(scheme, "consistent", 1., 0.02, end) +
-           subsection("Output",
-                      entry("Directory", "dynamics_output") +
-                        entry("Write VTU", "false") +
-                        entry("Verbose", "false"));
+           time_section(scheme, "consistent", 1., 0.02, end) + quiet_output();
   }
 
   template <int dim>
@@ -590,21 +614,14 @@ namespace
     const std::string velocity =
       three ? "-(y - 0.5); x - 2; 0" : "-(y - 0.5); x - 2";
     auto problem = run_scene<dim>(
-      subsection("Problem", entry("Dimension", std::to_string(dim))) +
-      subsection("Mesh",
-                 entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                   entry("Upper corner", three ? "1, 1, 1" : "1, 1") +
-                   entry("Subdivisions", three ? "2, 2, 2" : "2, 2")) +
-      subsection("Material",
-                 entry("Model", "neo-Hookean") +
-                   entry("Young's modulus", "100") +
-                   entry("Poisson's ratio", "0.3")) +
+      neo_hookean_box<dim>(three ? "0, 0, 0" : "0, 0",
+                           three ? "1, 1, 1" : "1, 1",
+                           "2",
+                           "100") +
       tight_solver("direct") +
       time_section("implicit midpoint", "consistent", 1., h, turns * per_turn * h,
                    velocity) +
-      subsection("Output",
-                 entry("Directory", "dynamics_output") +
-                   entry("Write VTU", "false") + entry("Verbose", "false")));
+      quiet_output());
     const auto  &steps = problem->summaries();
     const auto   L0    = steps.front().angular_momentum;
     const double E0    = steps.front().kinetic_energy + steps.front().energy;
@@ -647,14 +664,10 @@ namespace
   {
     const bool        three = dim == 3;
     const std::string scene =
-      subsection("Problem", entry("Dimension", std::to_string(dim))) +
-      subsection("Mesh",
-                 entry("Lower corner", three ? "0, 0, 0.2" : "0, 0.2") +
-                   entry("Upper corner", three ? "1, 1, 1.2" : "1, 1.2") +
-                   entry("Subdivisions", three ? "4, 4, 4" : "4, 4")) +
-      subsection("Material",
-                 entry("Model", "neo-Hookean") + entry("Young's modulus", "1") +
-                   entry("Poisson's ratio", "0.3")) +
+      neo_hookean_box<dim>(three ? "0, 0, 0.2" : "0, 0.2",
+                           three ? "1, 1, 1.2" : "1, 1.2",
+                           "4",
+                           "1") +
       subsection("Loading",
                  entry("Body force", three ? "0; 0; -1" : "0; -1")) +
       subsection("Contact",
@@ -662,9 +675,7 @@ namespace
                             entry("Type", "plane") +
                               entry("Point", three ? "0, 0, 0" : "0, 0") +
                               entry("Normal", three ? "0, 0, 1" : "0, 1"))) +
-      subsection("Output",
-                 entry("Directory", "dynamics_output") +
-                   entry("Write VTU", "false") + entry("Verbose", "false"));
+      quiet_output();
     for (const std::string &scheme : schemes)
       {
         auto problem = run_scene<dim>(
