@@ -82,8 +82,11 @@ namespace hyperelastic
         VectorType internal(owned, comm);
         context.elasticity.assemble_forces(u, 0., internal, scratch);
         scratch -= internal;
-        context.elasticity.end_state_forces(u, 0., internal);
-        scratch -= internal;
+        if (context.parameters.contact.active())
+          {
+            context.elasticity.end_state_forces(u, 0., internal);
+            scratch -= internal;
+          }
         inertia->solve_mass(scratch,
                             context.homogeneous_constraints,
                             acceleration);
@@ -164,7 +167,8 @@ namespace hyperelastic
                             u,
                             new_velocity,
                             new_acceleration);
-    if (integrator->end_force_weight() != 1.)
+    if (integrator->end_force_weight() != 1. &&
+        context.parameters.contact.active())
       {
         // Newmark: the acceleration kept is that of the forces other than
         // contact, which took the step's whole impulse (time_integrator.h).

@@ -54,6 +54,9 @@ namespace hyperelastic
     target.reinit(dof_handler.locally_owned_dofs(),
                   relevant,
                   dof_handler.get_communicator());
+    own_forces.reinit(dof_handler.locally_owned_dofs(),
+                      dof_handler.get_communicator());
+    own_round_off.reinit(own_forces);
   }
 
   template <int dim>
@@ -126,9 +129,8 @@ namespace hyperelastic
     // and their difference is far smaller in a long rigid motion: a body
     // 50 units down keeps falling 0.0004 a step), each assembled on its own
     // for its norm, then added to @p forces.
-    own_forces.reinit(dof_handler.locally_owned_dofs(),
-                      dof_handler.get_communicator());
-    own_round_off.reinit(own_forces);
+    own_forces    = 0.;
+    own_round_off = 0.;
     Vector<double> d, product, size;
     for_each_cell([&](const auto &dofs, const FullMatrix<double> &m) {
       const unsigned int n = dofs.size();
