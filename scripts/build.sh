@@ -10,10 +10,12 @@ launcher=()
 # CCACHE_BASEDIR makes the paths under the checkout relative and
 # CCACHE_NOHASHDIR leaves the build folder out of the hash (deal.II's flags
 # have -g), so that another clone of the repository (CI's) finds the objects
-# this one compiled.
+# this one compiled. The sloppiness lets ccache cache compiles that use the
+# precompiled headers (cmake/build_speed.cmake).
 if command -v ccache >/dev/null 2>&1; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
+  export CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime
 fi
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE="$build_type" "${launcher[@]}" >/dev/null
 targets=()

@@ -436,7 +436,7 @@ namespace
       {
         for (const double x : {-1., 0.5, 2.})
           points.emplace_back(x, -0.005);
-        elements = {{0, 1}, {1, 2}};
+        elements = {{{0, 1}}, {{1, 2}}};
       }
     else
       {
@@ -462,7 +462,7 @@ namespace
                             entry("Type", "mesh") + entry("File", file) +
                               entry("Point", three ? "0, 0, 0" : "0, 0"))));
     const auto &m = meshed->summaries().back();
-    for (const std::string name : {"contact_force_1_" + up,
+    for (const std::string &name : {"contact_force_1_" + up,
                                    std::string("contact_min_distance"),
                                    std::string("energy")})
       checker.close(tag + "meshed floor: " + name + " as with the plane",

@@ -74,7 +74,7 @@ namespace
               {
                 std::array<unsigned int, 3> t;
                 words >> t[0] >> t[1] >> t[2];
-                s.triangles.push_back({t[0] - 1, t[1] - 1, t[2] - 1});
+                s.triangles.push_back({{t[0] - 1, t[1] - 1, t[2] - 1}});
               }
           }
         return s;

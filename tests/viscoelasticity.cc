@@ -256,7 +256,7 @@ namespace
       const double J  = l * std::pow(a, n);
       const double I1 = l * l + n * a * a + (dim == 3 ? 0. : 1.);
       const double c  = mu * std::pow(J, -2. / 3.);
-      return {c * (1. - I1 / (3. * l * l)), c * (1. - I1 / (3. * a * a))};
+      return {{c * (1. - I1 / (3. * l * l)), c * (1. - I1 / (3. * a * a))}};
     }
 
     static std::array<double, 2>
@@ -264,7 +264,7 @@ namespace
     {
       const double J = l * std::pow(a, dim == 3 ? 2. : 1.);
       const double s = 0.5 * kappa * (J * J - 1.);
-      return {s / (l * l), s / (a * a)};
+      return {{s / (l * l), s / (a * a)}};
     }
   };
 
@@ -294,7 +294,7 @@ namespace
     const auto l_of = [](const double t) {
       return 1. + 0.4 * std::min(1., t / 0.3);
     };
-    std::array<double, 2> Q[2] = {{0., 0.}, {0., 0.}}, S = {0., 0.};
+    std::array<double, 2> Q[2] = {{{0., 0.}}, {{0., 0.}}}, S = {{0., 0.}};
     double t = 0., worst = 0., worst_a = 0.;
     for (const auto &row : rows)
       {

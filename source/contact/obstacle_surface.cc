@@ -97,11 +97,11 @@ namespace hyperelastic
     vertices                 = mesh.vertices;
     if constexpr (dim == 2)
       for (const auto &line : mesh.boundary.boundary_lines)
-        elements.push_back({line.vertices[0], line.vertices[1]});
+        elements.push_back({{line.vertices[0], line.vertices[1]}});
     else
       for (const auto &triangle : mesh.boundary.boundary_quads)
         elements.push_back(
-          {triangle.vertices[0], triangle.vertices[1], triangle.vertices[2]});
+          {{triangle.vertices[0], triangle.vertices[1], triangle.vertices[2]}});
     if (elements.empty())
       throw InputError("'" + entry + "' = '" + file_name + "' holds no " +
                        (dim == 2 ? "lines" : "triangles") +

@@ -39,7 +39,7 @@ namespace hyperelastic
     rotated(const std::array<unsigned int, 3> &t)
     {
       const unsigned int k = std::min_element(t.begin(), t.end()) - t.begin();
-      return {t[k], t[(k + 1) % 3], t[(k + 2) % 3]};
+      return {{t[k], t[(k + 1) % 3], t[(k + 2) % 3]}};
     }
   } // namespace
 
@@ -96,7 +96,7 @@ namespace hyperelastic
           continue;
         cell->get_dof_indices(cell_dofs);
         if constexpr (dim == 2)
-          add_triangle(cell, {0, 1, 2});
+          add_triangle(cell, {{0, 1, 2}});
         else
           for (const unsigned int f : cell->face_indices())
             {
@@ -145,9 +145,9 @@ namespace hyperelastic
             {
               corner_vertex[r].push_back(number.at(all_keys[r][i]));
               if (i % 3 == 2)
-                triangles.push_back(rotated({corner_vertex[r][i - 2],
-                                             corner_vertex[r][i - 1],
-                                             corner_vertex[r][i]}));
+                triangles.push_back(rotated({{corner_vertex[r][i - 2],
+                                              corner_vertex[r][i - 1],
+                                              corner_vertex[r][i]}}));
             }
         std::sort(triangles.begin(), triangles.end());
         n_surface_vertices  = reference.size();

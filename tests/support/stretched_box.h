@@ -49,7 +49,7 @@ namespace hyperelastic::testing
   box_stretches(const StepSummary<dim> &last)
   {
     const char            axes[3] = {'x', 'y', 'z'};
-    std::array<double, 3> l       = {1., 1., 1.};
+    std::array<double, 3> l       = {{1., 1., 1.}};
     for (unsigned int d = 0; d < dim; ++d)
       l[d] = column(last, std::string("deformed_max_") + axes[d]) -
              column(last, std::string("deformed_min_") + axes[d]);
