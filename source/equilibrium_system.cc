@@ -114,7 +114,7 @@ namespace hyperelastic
     // A load term's admissible set on its way (an obstacle moving within
     // the step) makes this iteration a predictor too: the linearization
     // carries the rest of its motion.
-    const bool moves_terms = elasticity->moving(current_load_factor);
+    const bool moves_terms = elasticity->prepare_motion(current_load_factor);
     // Self-contact pairs between distant parts of the boundary couple dofs
     // the mesh does not: the tangent's sparsity grows with them (the
     // preconditioner is then built anew for the new matrix).

@@ -228,15 +228,16 @@ namespace hyperelastic
           << " (mu = " << material->small_strain_moduli().mu
           << ", lambda = " << material->small_strain_moduli().lambda << ")\n"
           << "linear solver: " << linear_solver.description() << std::endl;
-    if (!elasticity->load_terms().empty())
+    if (!elasticity->energy_terms().empty())
       {
         pcout << "loads:";
-        for (const auto &term : elasticity->load_terms())
-          pcout << (&term == &elasticity->load_terms().front() ? " " : ", ")
+        for (const auto &term : elasticity->energy_terms())
+          pcout << (&term == &elasticity->energy_terms().front() ? " " : ", ")
                 << term->name()
-                << (!term->depends_on_solution() ? " (dead)"
-                    : term->is_conservative()    ? " (follower, conservative)"
-                                                 : " (follower)");
+                << (term->kind() == TermKind::dead ? " (dead)"
+                    : term->kind() == TermKind::conservative
+                      ? " (follower, conservative)"
+                      : " (follower)");
         pcout << std::endl;
       }
     if (contact)

@@ -224,7 +224,7 @@ namespace
         g.compress(dealii::VectorOperation::add);
         const double slope = -dot(g, v);
         const double fd_slope =
-          (contact.potential(at(h), 0.) - contact.potential(at(-h), 0.)) /
+          (contact.energy(at(h), 0.) - contact.energy(at(-h), 0.)) /
           (2. * h);
         checker.close(name +
                         "forces . v against (V(u + h v) - V(u - h v)) / 2h",
@@ -243,7 +243,7 @@ namespace
         dealii::AffineConstraints<double> none;
         none.close();
         u_ghosted = u;
-        contact.add_load_stiffness(u_ghosted, 0., none, K, rhs);
+        contact.add_stiffness(u_ghosted, 0., TangentProjection::none, none, K, rhs);
         K.compress(dealii::VectorOperation::add);
         VectorType Kv(box.owned, comm), g_plus(box.owned, comm),
           g_minus(box.owned, comm);
@@ -302,7 +302,7 @@ namespace
         w.add(alpha, down);
         u_ghosted = w;
         checker.is_true(name + "potential finite at the feasible step",
-                        std::isfinite(contact.potential(u_ghosted, 0.)));
+                        std::isfinite(contact.energy(u_ghosted, 0.)));
         if (type != ObstacleType::mesh)
           {
             w = u;
@@ -310,7 +310,7 @@ namespace
             u_ghosted = w;
             checker.is_true(name + "past the crossing the potential is "
                                    "infinite",
-                            !std::isfinite(contact.potential(u_ghosted, 0.)));
+                            !std::isfinite(contact.energy(u_ghosted, 0.)));
             continue;
           }
         // A surface has no inside (its distance is unsigned): along the
@@ -319,7 +319,7 @@ namespace
         // closest vertex keeps a tenth of its distance).
         bool finite = true;
         for (unsigned int i = 0; i <= 20; ++i)
-          finite = finite && std::isfinite(contact.potential(
+          finite = finite && std::isfinite(contact.energy(
                                [&]() {
                                  w = u;
                                  w.add(alpha * i / 20., down);
@@ -332,12 +332,12 @@ namespace
         w = u;
         w.add(alpha, down);
         u_ghosted             = w;
-        const double at_alpha = contact.potential(u_ghosted, 0.);
+        const double at_alpha = contact.energy(u_ghosted, 0.);
         w                     = u;
         w.add(0.999 * alpha / 0.9, down);
         u_ghosted = w;
         checker.above(name + "potential near the crossing / at alpha",
-                      contact.potential(u_ghosted, 0.) / at_alpha,
+                      contact.energy(u_ghosted, 0.) / at_alpha,
                       1.);
       }
   }

@@ -179,7 +179,7 @@ namespace
 
     VectorType u = s.owned();
     fill_random(u, 0.05, 2);
-    const auto &term = *s.op->load_terms().front();
+    const auto &term = *s.op->energy_terms().front();
     VectorType  g    = s.owned();
     term.add_forces(s.ghosted(u), 0.5, g);
     g.compress(VectorOperation::add);
@@ -192,8 +192,8 @@ namespace
         VectorType   plus = u, minus = u;
         plus.add(h, v);
         minus.add(-h, v);
-        const double dV = (term.potential(s.ghosted(plus), 0.5) -
-                           term.potential(s.ghosted(minus), 0.5)) /
+        const double dV = (term.energy(s.ghosted(plus), 0.5) -
+                           term.energy(s.ghosted(minus), 0.5)) /
                           (2. * h);
         worst = std::max(worst, std::abs(dV + g * v) / std::abs(g * v));
       }

@@ -186,7 +186,7 @@ namespace hyperelastic
     free_residual_norm(double &noise);
 
     /// (Re)builds the tangent's sparsity: the mesh's couplings and the load
-    /// terms' (LoadTerm::add_couplings). Collective.
+    /// terms' (CouplingTerm::add_couplings). Collective.
     void
     build_tangent_sparsity();
 

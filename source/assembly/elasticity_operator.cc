@@ -43,13 +43,30 @@ namespace hyperelastic
   ElasticityOperator<dim>::~ElasticityOperator() = default;
 
   template <int dim>
+  void
+  ElasticityOperator<dim>::add_term(std::unique_ptr<EnergyTerm<dim>> term)
+  {
+    (term->kind() == TermKind::dead ? has_dead_terms : has_live_terms) = true;
+    EnergyTerm<dim> *added = term.get();
+    if (auto *stepped = dynamic_cast<SteppedTerm<dim> *>(added))
+      stepped_terms.push_back(stepped);
+    if (auto *admissible = dynamic_cast<AdmissibleSetTerm<dim> *>(added))
+      admissible_sets.push_back(admissible);
+    if (auto *moving = dynamic_cast<MovingAdmissibleSetTerm<dim> *>(added))
+      moving_sets.push_back(moving);
+    if (auto *coupling = dynamic_cast<CouplingTerm<dim> *>(added))
+      coupling_terms.push_back(coupling);
+    terms.push_back(std::move(term));
+  }
+
+  template <int dim>
   bool
   ElasticityOperator<dim>::is_conservative() const
   {
     if (!generic->is_conservative())
       return false;
     for (const auto &term : terms)
-      if (!term->is_conservative())
+      if (term->kind() == TermKind::non_conservative)
         return false;
     return true;
   }
@@ -63,7 +80,7 @@ namespace hyperelastic
     dead_cache.reinit(dof_handler.locally_owned_dofs(),
                       dof_handler.get_communicator());
     for (const auto &term : terms)
-      if (!term->depends_on_solution())
+      if (term->kind() == TermKind::dead)
         term->add_forces(dead_cache, t, dead_cache);
     dead_cache.compress(VectorOperation::add);
     dead_cache_time = t;
@@ -84,7 +101,7 @@ namespace hyperelastic
     if (!has_live_terms)
       return size;
     for (const auto &term : terms)
-      if (term->depends_on_solution())
+      if (term->kind() != TermKind::dead)
         {
           const ForceSize s = term->add_forces(u, t, external);
           size.magnitude    = std::max(size.magnitude, s.magnitude);
@@ -148,12 +165,8 @@ namespace hyperelastic
     if (!has_live_terms)
       return;
     for (const auto &term : terms)
-      if (term->depends_on_solution())
-        {
-          term->request_positive_semidefinite(project_tangent ==
-                                              TangentProjection::every_point);
-          term->add_load_stiffness(u, t, constraints, matrix, rhs);
-        }
+      if (term->kind() != TermKind::dead)
+        term->add_stiffness(u, t, project_tangent, constraints, matrix, rhs);
     matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
   }
@@ -181,9 +194,9 @@ namespace hyperelastic
         result.noise += round_off * std::abs(work);
       }
     for (const auto &term : terms)
-      if (term->depends_on_solution() && term->is_conservative())
+      if (term->kind() == TermKind::conservative)
         {
-          const double potential = term->potential(u, t);
+          const double potential = term->energy(u, t);
           result.energy += potential;
           result.noise += round_off * std::abs(potential);
         }

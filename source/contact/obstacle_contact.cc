@@ -381,9 +381,10 @@ namespace hyperelastic
 
   template <int dim>
   void
-  ObstacleContact<dim>::add_load_stiffness(
-    const VectorType                &u,
-    const double                     t,
+  ObstacleContact<dim>::add_stiffness(
+    const VectorType &u,
+    const double      t,
+    TangentProjection,
     const AffineConstraints<double> &constraints,
     MatrixType                      &matrix,
     VectorType                      &rhs) const
@@ -436,7 +437,7 @@ namespace hyperelastic
 
   template <int dim>
   double
-  ObstacleContact<dim>::potential(const VectorType &u, const double t) const
+  ObstacleContact<dim>::energy(const VectorType &u, const double t) const
   {
     const auto scope   = timed_section(timer, "contact");
     double     sum     = 0.;
@@ -554,7 +555,7 @@ namespace hyperelastic
 
   template <int dim>
   bool
-  ObstacleContact<dim>::moving(const double t)
+  ObstacleContact<dim>::prepare_motion(const double t)
   {
     const double t_end = end_time(t);
     if (!(reached < t_end))

@@ -31,7 +31,7 @@ namespace hyperelastic
     constexpr double coupling_reach = 4.;
 
     /// The potential w V(x_end) / c of a pair in the step's solved state
-    /// (end-state map c, force weight w; LoadTerm::set_end_state_map) from
+    /// (end-state map c, force weight w; SteppedTerm::set_end_state_map) from
     /// the pair's barrier @p b at x_end: energy w / c, gradient w, Hessian
     /// (@p order 2) w c times those.
     template <std::size_t n>
@@ -616,14 +616,17 @@ namespace hyperelastic
 
   template <int dim>
   void
-  SelfContact<dim>::add_load_stiffness(
-    const VectorType                &u,
-    const double                     t,
-    const AffineConstraints<double> &constraints,
-    MatrixType                      &matrix,
-    VectorType                      &rhs) const
+  SelfContact<dim>::add_stiffness(const VectorType                &u,
+                                  const double                     t,
+                                  const TangentProjection          projection,
+                                  const AffineConstraints<double> &constraints,
+                                  MatrixType                      &matrix,
+                                  VectorType &rhs) const
   {
     const auto scope = timed_section(timer, "contact");
+    // Each pair's Hessian exact, or projected to positive semi-definite
+    // for Newton's projected tangent.
+    const bool project_pairs = projection == TangentProjection::every_point;
     // The prescribed value of every boundary dof near here (NaN where
     // free), from its owner: a pair's far vertices may be constrained on
     // another rank.
@@ -695,7 +698,7 @@ namespace hyperelastic
 
   template <int dim>
   double
-  SelfContact<dim>::potential(const VectorType &u, const double t) const
+  SelfContact<dim>::energy(const VectorType &u, const double t) const
   {
     const auto scope = timed_section(timer, "contact");
     double     sum   = 0.;

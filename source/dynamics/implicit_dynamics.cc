@@ -196,9 +196,9 @@ namespace hyperelastic
   {
     // Potential energy without the step's inertia and damping terms; kinetic
     // energy and momenta of the converged motion.
-    s.energy -= inertia->potential(u_ghosted, s.load_factor);
+    s.energy -= inertia->energy(u_ghosted, s.load_factor);
     if (stiffness_damping)
-      s.energy -= stiffness_damping->potential(u_ghosted, s.load_factor);
+      s.energy -= stiffness_damping->energy(u_ghosted, s.load_factor);
     const MotionMeasures m = motion->measure(u_ghosted, velocity_ghosted);
     s.dynamic              = true;
     s.kinetic_energy       = m.kinetic_energy;

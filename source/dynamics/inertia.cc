@@ -164,9 +164,10 @@ namespace hyperelastic
 
   template <int dim>
   void
-  InertiaTerm<dim>::add_load_stiffness(const VectorType &,
-                                       const double,
-                                       const AffineConstraints<double> &constraints,
+  InertiaTerm<dim>::add_stiffness(const VectorType &,
+                                  const double,
+                                  TangentProjection,
+                                  const AffineConstraints<double> &constraints,
                                        MatrixType                      &matrix,
                                        VectorType                      &rhs) const
   {
@@ -180,7 +181,7 @@ namespace hyperelastic
 
   template <int dim>
   double
-  InertiaTerm<dim>::potential(const VectorType &u, const double) const
+  InertiaTerm<dim>::energy(const VectorType &u, const double) const
   {
     double sum = 0.;
     for_each_cell_product(

@@ -58,9 +58,10 @@ namespace hyperelastic
 
   template <int dim>
   void
-  StiffnessDampingTerm<dim>::add_load_stiffness(
+  StiffnessDampingTerm<dim>::add_stiffness(
     const VectorType &,
     const double,
+    TangentProjection,
     const AffineConstraints<double> &constraints,
     MatrixType                      &matrix,
     VectorType                      &rhs) const
@@ -91,7 +92,7 @@ namespace hyperelastic
 
   template <int dim>
   double
-  StiffnessDampingTerm<dim>::potential(const VectorType &u, const double) const
+  StiffnessDampingTerm<dim>::energy(const VectorType &u, const double) const
   {
     apply(u, difference, product);
     return 0.5 * scale * (difference * product);

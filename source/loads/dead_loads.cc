@@ -5,6 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <hyperelastic/loads/dead_loads.h>
+#include <hyperelastic/loads/load_terms.h>
 
 #include <cmath>
 

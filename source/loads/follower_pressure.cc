@@ -8,6 +8,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <hyperelastic/loads/follower_pressure.h>
+#include <hyperelastic/loads/load_terms.h>
 
 #include <algorithm>
 #include <array>
@@ -190,9 +191,10 @@ namespace hyperelastic
 
   template <int dim>
   void
-  FollowerPressure<dim>::add_load_stiffness(
-    const VectorType                &u,
-    const double                     t,
+  FollowerPressure<dim>::add_stiffness(
+    const VectorType &u,
+    const double      t,
+    TangentProjection,
     const AffineConstraints<double> &constraints,
     MatrixType                      &matrix,
     VectorType                      &rhs) const
@@ -222,7 +224,7 @@ namespace hyperelastic
 
   template <int dim>
   double
-  FollowerPressure<dim>::potential(const VectorType &u, const double t) const
+  FollowerPressure<dim>::energy(const VectorType &u, const double t) const
   {
     double sum = 0.;
     for_each_face(u, t, [&](const FaceData &data) {

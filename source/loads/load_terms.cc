@@ -1,4 +1,4 @@
-// Each loading section of a scene becomes one LoadTerm: a new kind of
+// Each loading section of a scene becomes one EnergyTerm: a new kind of
 // boundary load is registered here with one line.
 #include <deal.II/base/exceptions.h>
 
@@ -13,12 +13,12 @@ namespace hyperelastic
   {
     template <int dim>
     using BoundaryTermFactory =
-      std::unique_ptr<LoadTerm<dim>> (*)(const BoundaryLoad<dim> &,
+      std::unique_ptr<EnergyTerm<dim>> (*)(const BoundaryLoad<dim> &,
                                          const dealii::DoFHandler<dim> &,
                                          const dealii::Mapping<dim> &);
 
     template <int dim, typename Term>
-    std::unique_ptr<LoadTerm<dim>>
+    std::unique_ptr<EnergyTerm<dim>>
     make_boundary_term(const BoundaryLoad<dim>       &load,
                        const dealii::DoFHandler<dim> &dof_handler,
                        const dealii::Mapping<dim>    &mapping)
@@ -72,12 +72,12 @@ namespace hyperelastic
   }
 
   template <int dim>
-  std::vector<std::unique_ptr<LoadTerm<dim>>>
+  std::vector<std::unique_ptr<EnergyTerm<dim>>>
   create_load_terms(const BoundaryConditions<dim> &bc,
                     const dealii::DoFHandler<dim> &dof_handler,
                     const dealii::Mapping<dim>    &mapping)
   {
-    std::vector<std::unique_ptr<LoadTerm<dim>>> terms;
+    std::vector<std::unique_ptr<EnergyTerm<dim>>> terms;
     if (bc.body_force)
       terms.push_back(
         std::make_unique<BodyForce<dim>>(*bc.body_force, dof_handler, mapping));
@@ -92,11 +92,11 @@ namespace hyperelastic
     return terms;
   }
 
-  template std::vector<std::unique_ptr<LoadTerm<2>>>
+  template std::vector<std::unique_ptr<EnergyTerm<2>>>
   create_load_terms(const BoundaryConditions<2> &,
                     const dealii::DoFHandler<2> &,
                     const dealii::Mapping<2> &);
-  template std::vector<std::unique_ptr<LoadTerm<3>>>
+  template std::vector<std::unique_ptr<EnergyTerm<3>>>
   create_load_terms(const BoundaryConditions<3> &,
                     const dealii::DoFHandler<3> &,
                     const dealii::Mapping<3> &);

@@ -2,7 +2,7 @@
 // displacement field u (internal forces, tangent, stored energy, smallest J).
 // Two implementations: the P1 kernel (assembly/p1_assembler.h) and the
 // generic FEValues loops (assembly/generic_assembler.h). Loads are not here:
-// they are LoadTerms (loads/load_term.h), added by ElasticityOperator.
+// they are EnergyTerms (assembly/energy_term.h), added by ElasticityOperator.
 #pragma once
 
 #include <deal.II/lac/affine_constraints.h>

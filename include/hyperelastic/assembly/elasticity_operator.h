@@ -13,7 +13,8 @@
 #include <hyperelastic/assembly/assembler.h>
 #include <hyperelastic/base/tangent_projection_mode.h>
 #include <hyperelastic/loads/boundary_conditions.h>
-#include <hyperelastic/loads/load_term.h>
+#include <hyperelastic/assembly/energy_term.h>
+#include <hyperelastic/assembly/term_capabilities.h>
 
 #include <algorithm>
 #include <limits>
@@ -93,18 +94,16 @@ namespace hyperelastic
     bool
     is_conservative() const;
 
-    /// Adds a term made elsewhere (the inertia of a time step); the caller
-    /// may keep a pointer to it to update its state.
+    /// Adds a term made elsewhere (the inertia of a time step, contact);
+    /// the caller may keep a pointer to it to update its state. The term's
+    /// opt-in capabilities (assembly/term_capabilities.h) are found here.
     void
-    add_term(std::unique_ptr<LoadTerm<dim>> term)
-    {
-      (term->depends_on_solution() ? has_live_terms : has_dead_terms) = true;
-      terms.push_back(std::move(term));
-    }
+    add_term(std::unique_ptr<EnergyTerm<dim>> term);
 
-    /// The load terms, in the order of the scene's sections.
-    const std::vector<std::unique_ptr<LoadTerm<dim>>> &
-    load_terms() const
+    /// The energy terms, in the order they were added (the scene's
+    /// sections, then the time step's and contact's).
+    const std::vector<std::unique_ptr<EnergyTerm<dim>>> &
+    energy_terms() const
     {
       return terms;
     }
@@ -142,52 +141,63 @@ namespace hyperelastic
     EnergyEvaluation
     evaluate(const VectorType &u, const double t, bool with_energy) const;
 
-    /// The smallest of the load terms' largest feasible steps from @p u
-    /// along @p direction (1 if none limits it). Collective.
+    /// The smallest of the admissible-set terms' largest feasible steps
+    /// from @p u along @p direction (1 if none limits it). Collective.
     double
     largest_feasible_step(const VectorType &u,
                           const VectorType &direction,
                           const double      t) const
     {
       double alpha = 1.;
-      for (const auto &term : terms)
+      for (const AdmissibleSetTerm<dim> *term : admissible_sets)
         alpha = std::min(alpha, term->largest_feasible_step(u, direction, t));
       return alpha;
     }
 
-    /// Whether a load term needs couplings the tangent's sparsity lacks
-    /// (LoadTerm::needs_new_couplings; every term is asked). Collective.
+    /// Whether a coupling term needs couplings the tangent's sparsity lacks
+    /// (CouplingTerm::needs_new_couplings; every such term is asked).
+    /// Collective.
     bool
     needs_new_couplings(const VectorType &u, const double t)
     {
       bool any = false;
-      for (const auto &term : terms)
+      for (CouplingTerm<dim> *term : coupling_terms)
         any = term->needs_new_couplings(u, t) || any;
       return any;
     }
 
-    /// Adds the load terms' couplings to @p pattern.
+    /// Adds the coupling terms' couplings to @p pattern.
     void
     add_couplings(dealii::DynamicSparsityPattern &pattern) const
     {
-      for (const auto &term : terms)
+      for (const CouplingTerm<dim> *term : coupling_terms)
         term->add_couplings(pattern);
     }
 
-    /// The load terms' step hooks (LoadTerm::begin_step, set_end_state_map,
-    /// moving, advance, update_lagged), each over all terms. Collective.
+    /// The stepped terms' hooks (SteppedTerm::begin_step,
+    /// set_end_state_map, update_lagged), each over all such terms.
+    /// Collective.
     void
     begin_step(const VectorType &u, const double t_start)
     {
-      for (const auto &term : terms)
+      for (SteppedTerm<dim> *term : stepped_terms)
         term->begin_step(u, t_start);
     }
     void
     set_end_state_map(const double c, const double weight)
     {
-      for (const auto &term : terms)
+      for (SteppedTerm<dim> *term : stepped_terms)
         term->set_end_state_map(c, weight);
     }
+    bool
+    update_lagged(const VectorType &u, const double t)
+    {
+      bool any = false;
+      for (SteppedTerm<dim> *term : stepped_terms)
+        any = term->update_lagged(u, t) || any;
+      return any;
+    }
+
     /// The forces of the terms held at the end of the step (those that
     /// scale with set_end_state_map's weight: contact) at @p u (ghosted)
     /// and @p t, at weight 1 and the map c = 1 (compressed, owned entries);
@@ -195,27 +205,21 @@ namespace hyperelastic
     void
     end_state_forces(const VectorType &u, double t, VectorType &forces);
 
+    /// The moving admissible sets' hooks (MovingAdmissibleSetTerm::
+    /// prepare_motion, advance), each over all such terms. Collective.
     bool
-    moving(const double t)
+    prepare_motion(const double t)
     {
       bool any = false;
-      for (const auto &term : terms)
-        any = term->moving(t) || any;
+      for (MovingAdmissibleSetTerm<dim> *term : moving_sets)
+        any = term->prepare_motion(t) || any;
       return any;
     }
     void
     advance(const double alpha, const double t)
     {
-      for (const auto &term : terms)
+      for (MovingAdmissibleSetTerm<dim> *term : moving_sets)
         term->advance(alpha, t);
-    }
-    bool
-    update_lagged(const VectorType &u, const double t)
-    {
-      bool any = false;
-      for (const auto &term : terms)
-        any = term->update_lagged(u, t) || any;
-      return any;
     }
 
     /// Total potential energy alone (collective).
@@ -241,9 +245,14 @@ namespace hyperelastic
     const bool                                  replaced;
     std::unique_ptr<Assembler<dim>>             generic;
     std::unique_ptr<Assembler<dim>>             p1;
-    std::vector<std::unique_ptr<LoadTerm<dim>>> terms;
-    bool                                        has_dead_terms = false;
-    bool                                        has_live_terms = false;
+    std::vector<std::unique_ptr<EnergyTerm<dim>>> terms;
+    bool                                          has_dead_terms = false;
+    bool                                          has_live_terms = false;
+    /// The terms with each opt-in capability, in the order of terms.
+    std::vector<SteppedTerm<dim> *>             stepped_terms;
+    std::vector<AdmissibleSetTerm<dim> *>       admissible_sets;
+    std::vector<MovingAdmissibleSetTerm<dim> *> moving_sets;
+    std::vector<CouplingTerm<dim> *>            coupling_terms;
 
     mutable VectorType dead_cache;
     mutable double dead_cache_time = std::numeric_limits<double>::quiet_NaN();

@@ -20,7 +20,8 @@
 // jump to its place at t when a step begins: it stays where it was, and
 // each Newton iteration carries it (like a prescribed displacement) as far
 // along its way as the feasible step allows, together with the body
-// (LoadTerm::moving/advance); the step converges only once it has arrived.
+// (MovingAdmissibleSetTerm::prepare_motion/advance); the step converges
+// only once it has arrived.
 //
 // Distances: plane d = n . (x - p(t)), n the unit normal towards the body;
 // sphere d = |x - c(t)| - R (the body outside); mesh: the distance to the
@@ -40,7 +41,8 @@
 #include <hyperelastic/base/timed_section.h>
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/contact/obstacle_surface.h>
-#include <hyperelastic/loads/load_term.h>
+#include <hyperelastic/assembly/energy_term.h>
+#include <hyperelastic/assembly/term_capabilities.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/output/step_summary.h>
 
@@ -56,7 +58,9 @@
 namespace hyperelastic
 {
   template <int dim>
-  class ObstacleContact : public LoadTerm<dim>
+  class ObstacleContact : public EnergyTerm<dim>,
+                          public SteppedTerm<dim>,
+                          public MovingAdmissibleSetTerm<dim>
   {
   public:
     /// Finds the owned boundary vertices, sets d_hat and kappa (automatic
@@ -78,16 +82,10 @@ namespace hyperelastic
       return "Contact (obstacles)";
     }
 
-    bool
-    depends_on_solution() const override
+    TermKind
+    kind() const override
     {
-      return true;
-    }
-
-    bool
-    is_conservative() const override
-    {
-      return true;
+      return TermKind::conservative;
     }
 
     /// Throws ConvergenceFailure on every rank if a vertex is on the wrong
@@ -98,15 +96,16 @@ namespace hyperelastic
                VectorType       &forces) const override;
 
     void
-    add_load_stiffness(const VectorType                        &u,
-                       double                                   t,
-                       const dealii::AffineConstraints<double> &constraints,
-                       MatrixType                              &matrix,
-                       VectorType &rhs) const override;
+    add_stiffness(const VectorType                        &u,
+                  double                                   t,
+                  TangentProjection                        projection,
+                  const dealii::AffineConstraints<double> &constraints,
+                  MatrixType                              &matrix,
+                  VectorType                              &rhs) const override;
 
     /// kappa sum b(d); +infinity if a distance is not positive.
     double
-    potential(const VectorType &u, double t) const override;
+    energy(const VectorType &u, double t) const override;
 
     /// Along @p direction with the obstacles moving jointly from where
     /// they are to their place at @p t.
@@ -124,7 +123,7 @@ namespace hyperelastic
       force_weight = weight;
     }
     bool
-    moving(double t) override;
+    prepare_motion(double t) override;
     void
     advance(double alpha, double t) override;
     bool

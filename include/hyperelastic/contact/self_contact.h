@@ -8,7 +8,7 @@
 // the boundary measure (edge-edge: the edge's third of its faces' areas).
 // Exact gradients and Hessians (automatic differentiation); each pair's
 // Hessian is projected to positive semi-definite when Newton asks for a
-// projected tangent (LoadTerm::request_positive_semidefinite: after the
+// projected tangent (EnergyTerm::add_stiffness's projection: after the
 // exact one gave no descent direction), exact otherwise, so that Newton
 // keeps its quadratic convergence where it can.
 //
@@ -27,7 +27,7 @@
 // point to point). A rank evaluates the pairs with a vertex it owns and
 // writes its owned rows only; a pair's energy is counted by the owner of its
 // lowest vertex. The tangent's sparsity grows with the pairs
-// (LoadTerm::needs_new_couplings). The answer does not depend on the number
+// (CouplingTerm::needs_new_couplings). The answer does not depend on the number
 // of ranks.
 //
 // Friction ('Contact/Self contact friction coefficient' mu): the smoothed,
@@ -52,7 +52,8 @@
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/contact/pair_friction.h>
 #include <hyperelastic/contact/primitive_distance.h>
-#include <hyperelastic/loads/load_term.h>
+#include <hyperelastic/assembly/energy_term.h>
+#include <hyperelastic/assembly/term_capabilities.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/output/step_summary.h>
 
@@ -66,7 +67,10 @@
 namespace hyperelastic
 {
   template <int dim>
-  class SelfContact : public LoadTerm<dim>
+  class SelfContact : public EnergyTerm<dim>,
+                      public SteppedTerm<dim>,
+                      public AdmissibleSetTerm<dim>,
+                      public CouplingTerm<dim>
   {
   public:
     /// Gathers the boundary (collective), sets d_hat and kappa as the
@@ -85,16 +89,10 @@ namespace hyperelastic
       return "Contact (self)";
     }
 
-    bool
-    depends_on_solution() const override
+    TermKind
+    kind() const override
     {
-      return true;
-    }
-
-    bool
-    is_conservative() const override
-    {
-      return true;
+      return TermKind::conservative;
     }
 
     /// Throws ConvergenceFailure on every rank if two primitives touch.
@@ -104,24 +102,17 @@ namespace hyperelastic
                VectorType       &forces) const override;
 
     void
-    add_load_stiffness(const VectorType                        &u,
-                       double                                   t,
-                       const dealii::AffineConstraints<double> &constraints,
-                       MatrixType                              &matrix,
-                       VectorType &rhs) const override;
-
-    /// Each pair's Hessian exact (default) or projected to positive
-    /// semi-definite (Newton's projected tangent).
-    void
-    request_positive_semidefinite(const bool positive_semidefinite) override
-    {
-      project_pairs = positive_semidefinite;
-    }
+    add_stiffness(const VectorType                        &u,
+                  double                                   t,
+                  TangentProjection                        projection,
+                  const dealii::AffineConstraints<double> &constraints,
+                  MatrixType                              &matrix,
+                  VectorType                              &rhs) const override;
 
     /// kappa sum w m b (plus friction's potential); +infinity if two
     /// primitives touch.
     double
-    potential(const VectorType &u, double t) const override;
+    energy(const VectorType &u, double t) const override;
 
     /// The largest step along @p direction that keeps every pair at a
     /// tenth of its distance (additive CCD).
@@ -358,7 +349,6 @@ namespace hyperelastic
     double d_hat = 0., kappa = 0.;
     double end_factor    = 1.;
     double force_weight    = 1.; ///< of set_end_state_map()
-    bool   project_pairs = false;
     /// The owned boundary vertices' positions at the step's start (the
     /// end-state map, friction's slip), and the step's start time.
     std::vector<dealii::Point<dim>> owned_start;

@@ -10,12 +10,12 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/full_matrix.h>
 
-#include <hyperelastic/loads/load_term.h>
+#include <hyperelastic/assembly/energy_term.h>
 
 namespace hyperelastic
 {
   template <int dim>
-  class InertiaTerm : public LoadTerm<dim>
+  class InertiaTerm : public EnergyTerm<dim>
   {
   public:
     /// @p density: mass per unit reference volume; @p lumped: the diagonal
@@ -31,16 +31,10 @@ namespace hyperelastic
       return "Time integration (inertia)";
     }
 
-    bool
-    depends_on_solution() const override
+    TermKind
+    kind() const override
     {
-      return true;
-    }
-
-    bool
-    is_conservative() const override
-    {
-      return true;
+      return TermKind::conservative;
     }
 
     /// The step's scale c > 0 and target @p w (owned entries; copied with
@@ -54,14 +48,15 @@ namespace hyperelastic
     add_forces(const VectorType &u, double t, VectorType &forces) const override;
 
     void
-    add_load_stiffness(const VectorType                        &u,
-                       double                                   t,
-                       const dealii::AffineConstraints<double> &constraints,
-                       MatrixType                              &matrix,
-                       VectorType                              &rhs) const override;
+    add_stiffness(const VectorType                        &u,
+                  double                                   t,
+                  TangentProjection                        projection,
+                  const dealii::AffineConstraints<double> &constraints,
+                  MatrixType                              &matrix,
+                  VectorType                              &rhs) const override;
 
     double
-    potential(const VectorType &u, double t) const override;
+    energy(const VectorType &u, double t) const override;
 
     /// M v (owned entries, compressed); @p v with ghost entries.
     void

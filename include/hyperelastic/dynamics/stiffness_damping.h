@@ -14,13 +14,13 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 
-#include <hyperelastic/loads/load_term.h>
+#include <hyperelastic/assembly/energy_term.h>
 #include <hyperelastic/materials/material.h>
 
 namespace hyperelastic
 {
   template <int dim>
-  class StiffnessDampingTerm : public LoadTerm<dim>
+  class StiffnessDampingTerm : public EnergyTerm<dim>
   {
   public:
     /// Assembles K0 (collective).
@@ -34,16 +34,10 @@ namespace hyperelastic
       return "Time integration (stiffness damping)";
     }
 
-    bool
-    depends_on_solution() const override
+    TermKind
+    kind() const override
     {
-      return true;
-    }
-
-    bool
-    is_conservative() const override
-    {
-      return true;
+      return TermKind::conservative;
     }
 
     /// The step's scale s = b kappa >= 0 and the velocity's zero @p d
@@ -55,14 +49,15 @@ namespace hyperelastic
     add_forces(const VectorType &u, double t, VectorType &forces) const override;
 
     void
-    add_load_stiffness(const VectorType                        &u,
-                       double                                   t,
-                       const dealii::AffineConstraints<double> &constraints,
-                       MatrixType                              &matrix,
-                       VectorType                              &rhs) const override;
+    add_stiffness(const VectorType                        &u,
+                  double                                   t,
+                  TangentProjection                        projection,
+                  const dealii::AffineConstraints<double> &constraints,
+                  MatrixType                              &matrix,
+                  VectorType                              &rhs) const override;
 
     double
-    potential(const VectorType &u, double t) const override;
+    energy(const VectorType &u, double t) const override;
 
   private:
     /// K0 (u - d) into @p product and u - d into @p difference (owned).

@@ -1,8 +1,8 @@
 // Loads and supports of a scene as functions of (x, y, z, t): prescribed
 // displacements (Dirichlet, with a component mask), body forces per unit
 // reference volume and the boundary loads of the registered kinds (dead
-// tractions, follower pressures, ...). The forces they exert are LoadTerms
-// (loads/load_term.h, loads/load_terms.h).
+// tractions, follower pressures, ...). The forces they exert are EnergyTerms
+// (assembly/energy_term.h, loads/load_terms.h).
 #pragma once
 
 #include <deal.II/base/function.h>

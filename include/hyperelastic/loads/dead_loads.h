@@ -9,14 +9,14 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 
-#include <hyperelastic/loads/load_term.h>
+#include <hyperelastic/assembly/energy_term.h>
 #include <hyperelastic/loads/loading_parameters.h>
 
 namespace hyperelastic
 {
   /// int b(X, t) N_a dV over the reference body.
   template <int dim>
-  class BodyForce : public LoadTerm<dim>
+  class BodyForce : public DeadTerm<dim>
   {
   public:
     BodyForce(dealii::Function<dim>         &force,
@@ -29,11 +29,6 @@ namespace hyperelastic
       return "Loading/Body force";
     }
 
-    bool
-    depends_on_solution() const override
-    {
-      return false;
-    }
 
     ForceSize
     add_forces(const VectorType &u,
@@ -50,7 +45,7 @@ namespace hyperelastic
 
   /// int t0(X, t) N_a dA over the reference faces with one boundary id.
   template <int dim>
-  class DeadTraction : public LoadTerm<dim>
+  class DeadTraction : public DeadTerm<dim>
   {
   public:
     /// @p subsection: the scene section, for messages ("Traction 1").
@@ -83,11 +78,6 @@ namespace hyperelastic
       return subsection + "/Traction";
     }
 
-    bool
-    depends_on_solution() const override
-    {
-      return false;
-    }
 
     ForceSize
     add_forces(const VectorType &u,

@@ -22,13 +22,13 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 
-#include <hyperelastic/loads/load_term.h>
+#include <hyperelastic/assembly/energy_term.h>
 #include <hyperelastic/loads/loading_parameters.h>
 
 namespace hyperelastic
 {
   template <int dim>
-  class FollowerPressure : public LoadTerm<dim>
+  class FollowerPressure : public EnergyTerm<dim>
   {
   public:
     /// @p subsection: the scene section, for messages ("Pressure 1").
@@ -65,17 +65,11 @@ namespace hyperelastic
       return subsection + "/Pressure";
     }
 
-    bool
-    depends_on_solution() const override
+    /// Conservative on a closed loaded surface with uniform p.
+    TermKind
+    kind() const override
     {
-      return true;
-    }
-
-    /// Closed loaded surface and uniform p.
-    bool
-    is_conservative() const override
-    {
-      return conservative;
+      return conservative ? TermKind::conservative : TermKind::non_conservative;
     }
 
     ForceSize
@@ -84,14 +78,15 @@ namespace hyperelastic
                VectorType       &forces) const override;
 
     void
-    add_load_stiffness(const VectorType                        &u,
-                       double                                   t,
-                       const dealii::AffineConstraints<double> &constraints,
-                       MatrixType                              &matrix,
-                       VectorType &rhs) const override;
+    add_stiffness(const VectorType                        &u,
+                  double                                   t,
+                  TangentProjection                        projection,
+                  const dealii::AffineConstraints<double> &constraints,
+                  MatrixType                              &matrix,
+                  VectorType                              &rhs) const override;
 
     double
-    potential(const VectorType &u, double t) const override;
+    energy(const VectorType &u, double t) const override;
 
   private:
     struct FaceData;

@@ -39,7 +39,7 @@ namespace hyperelastic
   /// How a kind of boundary load appears in a scene: the sections
   /// "<name> 1" ... "<name> <max_sections>", each with the entries
   /// "Boundary id" and "<name>" (the value: dim expressions separated by ';'
-  /// if vector_valued, else one). Each boundary LoadTerm class describes its
+  /// if vector_valued, else one). Each boundary EnergyTerm class describes its
   /// kind (scene_kind()); loads/load_terms.cc lists the kinds.
   struct BoundaryLoadKind
   {

@@ -6,14 +6,14 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <hyperelastic/loads/boundary_conditions.h>
-#include <hyperelastic/loads/load_term.h>
+#include <hyperelastic/assembly/energy_term.h>
 
 #include <vector>
 
 namespace hyperelastic
 {
   template <int dim>
-  class PointLoads : public LoadTerm<dim>
+  class PointLoads : public DeadTerm<dim>
   {
   public:
     /// Finds each load's vertex among the locally owned dofs. Throws
@@ -28,11 +28,6 @@ namespace hyperelastic
       return "Point load";
     }
 
-    bool
-    depends_on_solution() const override
-    {
-      return false;
-    }
 
     ForceSize
     add_forces(const VectorType &u,
