@@ -15,7 +15,6 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <hyperelastic/assembly/elasticity_operator.h>
-#include <hyperelastic/contact/obstacle_contact.h>
 #include <hyperelastic/dynamics/time_stepping.h>
 #include <hyperelastic/equilibrium_system.h>
 #include <hyperelastic/formulation/formulation.h>
@@ -23,6 +22,7 @@
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/output/output.h>
 #include <hyperelastic/output/step_postprocessor.h>
+#include <hyperelastic/output/step_reporter.h>
 #include <hyperelastic/output/step_summary.h>
 #include <hyperelastic/output/surface_writer.h>
 #include <hyperelastic/parameters.h>
@@ -30,17 +30,16 @@
 #include <hyperelastic/solvers/load_stepping.h>
 #include <hyperelastic/solvers/newton_solver.h>
 
+#include <chrono>
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
 namespace hyperelastic
 {
-  template <int dim>
-  class SelfContact;
-
   template <int dim>
   class Problem
   {
@@ -155,8 +154,30 @@ namespace hyperelastic
     setup();
 
   private:
+    // The set-up's steps (setup()).
+    /// The mesh of 'Mesh'; returns its boundary ids.
+    std::set<dealii::types::boundary_id>
+    setup_mesh();
+    /// The equilibrium system and the step post-processor.
+    void
+    setup_system(const dealii::IndexSet &pressure_dofs);
+    /// The energy terms beyond the scene's loads (contact, the driver's),
+    /// the time-stepping driver, the supports check and the linear
+    /// solver's configuration.
+    void
+    setup_stepping(const dealii::IndexSet &pressure_dofs);
+    /// The output writers (and a restart's checkpoint).
+    void
+    setup_output();
+
     void
     solve_all_load_steps();
+    /// After converged step @p step: the summary, its row, the checkpoint,
+    /// the observer and the progress lines; @p start: the run's start.
+    void
+    report_step(const LoadStep                                     &step,
+                const NewtonResult                                 &result,
+                const std::chrono::steady_clock::time_point &start);
     /// The run header: element, size, ranks, material, solver, loads.
     void
     print_header() const;
@@ -213,13 +234,12 @@ namespace hyperelastic
     std::unique_ptr<ElasticityOperator<dim>>       elasticity;
     std::unique_ptr<TimeStepping<dim>>             stepping;
     std::unique_ptr<EquilibriumSystem<dim>>        system;
-    /// The obstacles' barrier term ('Contact', owned by the operator; null
-    /// without obstacles).
-    ObstacleContact<dim>                   *contact = nullptr;
-    /// The boundary's contact with itself ('Contact/Self contact'; null
-    /// when off).
-    SelfContact<dim> *self_contact = nullptr;
     std::unique_ptr<StepPostprocessor<dim>> postprocessor;
+    /// What the contact terms report (null without contact).
+    std::unique_ptr<StepReporter<dim>> contact_reporter;
+    /// The reporters of a step, in the order of their columns: the driver,
+    /// the post-processor, then contact's.
+    std::vector<StepReporter<dim> *> reporters;
     std::unique_ptr<OutputWriter<dim>>      writer;
     /// 'Output/Surface format' (null for none).
     std::unique_ptr<SurfaceWriter<dim>> surface;

@@ -64,6 +64,20 @@ namespace hyperelastic
       message);
   }
 
+  void
+  throw_input_error_of_first_rank(const std::string &local_problem,
+                                  const MPI_Comm     comm)
+  {
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int first   = dealii::Utilities::MPI::min(
+      local_problem.empty() ? n_ranks
+                              : dealii::Utilities::MPI::this_mpi_process(comm),
+      comm);
+    if (first < n_ranks)
+      throw InputError(
+        dealii::Utilities::MPI::broadcast(comm, local_problem, first));
+  }
+
   int
   run_and_report(const std::function<void()> &body, const MPI_Comm comm)
   {

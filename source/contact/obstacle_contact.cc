@@ -5,6 +5,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/contact/barrier.h>
+#include <hyperelastic/contact/barrier_settings.h>
 #include <hyperelastic/contact/friction.h>
 #include <hyperelastic/contact/obstacle_contact.h>
 #include <hyperelastic/loads/boundary_conditions.h>
@@ -46,7 +47,7 @@ namespace hyperelastic
       : obstacles(parameters.obstacles)
       , comm(dof_handler.get_communicator())
       , dynamic(dynamic)
-      , max_lagging_updates(parameters.friction_lagging_updates)
+      , lagging(parameters.friction_lagging_updates)
   {
     for (const auto &o : obstacles)
       {
@@ -123,17 +124,11 @@ namespace hyperelastic
                               Utilities::MPI::min(lower[d], comm);
         diagonal += extent * extent;
       }
-    diagonal    = std::sqrt(diagonal);
-    d_hat_value = parameters.barrier_distance > 0. ? parameters.barrier_distance
-                                                   : 1e-3 * diagonal;
-    kappa       = parameters.barrier_stiffness > 0.
-                    ? parameters.barrier_stiffness
-                    : (moduli.lambda + 2. * moduli.mu) / d_hat_value;
-    // Friction's smoothing: a slip length per step (quasi-static) or a slip
-    // velocity (dynamics).
-    eps_setting = parameters.friction_smoothing > 0.
-                    ? parameters.friction_smoothing
-                    : (dynamic ? d_hat_value : 0.1 * d_hat_value);
+    const BarrierSettings settings =
+      barrier_settings(parameters, std::sqrt(diagonal), moduli, dynamic);
+    d_hat_value = settings.d_hat;
+    kappa       = settings.kappa;
+    eps_setting = settings.eps;
 
     // The start must be feasible.
     std::string               problem;
@@ -154,11 +149,7 @@ namespace hyperelastic
         if (!problem.empty())
           break;
       }
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    const unsigned int first   = Utilities::MPI::min(
-      problem.empty() ? n_ranks : Utilities::MPI::this_mpi_process(comm), comm);
-    if (first < n_ranks)
-      throw InputError(Utilities::MPI::broadcast(comm, problem, first));
+    throw_input_error_of_first_rank(problem, comm);
   }
 
   template <int dim>
@@ -245,8 +236,8 @@ namespace hyperelastic
     Point<dim>    x = v.X;
     for (unsigned int d = 0; d < dim; ++d)
       x[d] += u(v.dofs[d]);
-    if (end_factor != 1.)
-      x = start_positions[a] + end_factor * (x - start_positions[a]);
+    if (end_state.c != 1.)
+      x = end_state.end_position(start_positions[a], x);
     return x;
   }
 
@@ -329,9 +320,9 @@ namespace hyperelastic
             PairState p = pair(a, k, x, where[k], eps, with_stiffness);
             // The potential w V(x_end) / c in the solved state: gradient
             // w V'(x_end), Hessian w c V''(x_end).
-            p.energy *= force_weight / end_factor;
-            p.force *= force_weight;
-            p.stiffness *= force_weight * end_factor;
+            p.energy *= end_state.energy_factor();
+            p.force *= end_state.gradient_factor();
+            p.stiffness *= end_state.hessian_factor();
             crossed = crossed || !(p.distance > 0.);
             f(a, k, p);
           }
@@ -424,7 +415,7 @@ namespace hyperelastic
           }
         add_condensed(block, dofs, constraints, matrix, rhs);
         // K w, K the pair's stiffness in the end state.
-        const Tensor<1, dim> pull = p.stiffness * rest[k] / end_factor;
+        const Tensor<1, dim> pull = p.stiffness * rest[k] / end_state.c;
         for (unsigned int i = 0; i < dim; ++i)
           if (pull[i] != 0. && !constraints.is_constrained(dofs[i]))
             {
@@ -473,7 +464,7 @@ namespace hyperelastic
             // The vertex's motion relative to the obstacle.
             Tensor<1, dim> p = now[k].point - end[k].point;
             for (unsigned int c = 0; c < dim; ++c)
-              p[c] += end_factor * direction(v.dofs[c]);
+              p[c] += end_state.c * direction(v.dofs[c]);
             if (now[k].type == ObstacleType::mesh)
               {
                 alpha = std::min(
@@ -544,9 +535,8 @@ namespace hyperelastic
   {
     step_start      = t_start;
     reached         = t_start;
-    lagging_updates = 0;
-    end_factor      = 1.;
-    force_weight    = 1.;
+    lagging.begin_step();
+    end_state       = EndStateMap();
     start_positions.resize(vertices.size());
     for (unsigned int a = 0; a < vertices.size(); ++a)
       start_positions[a] = position(a, u);
@@ -582,7 +572,7 @@ namespace hyperelastic
   bool
   ObstacleContact<dim>::update_lagged(const VectorType &u, const double t)
   {
-    if (!has_friction() || lagging_updates >= max_lagging_updates)
+    if (!has_friction() || !lagging.may_update())
       return false;
     std::vector<Lagged> next   = lagged_at(u, obstacle_time(t));
     double              change = 0., largest = 0.;
@@ -593,21 +583,17 @@ namespace hyperelastic
                    std::abs(next[i].normal_force - lagged[i].normal_force));
         largest = std::max(largest, next[i].normal_force);
       }
-    change  = Utilities::MPI::max(change, comm);
-    largest = Utilities::MPI::max(largest, comm);
-    if (!(change > 1e-3 * largest))
+    if (!lagging.accept(change, largest, comm))
       return false;
     lagged = std::move(next);
-    ++lagging_updates;
     return true;
   }
 
   template <int dim>
-  void
-  ObstacleContact<dim>::summarize(const VectorType &u,
-                                  const double      t,
-                                  StepSummary<dim> &s) const
+  ContactMeasures
+  ObstacleContact<dim>::measure(const VectorType &u, const double t) const
   {
+    ContactMeasures             m;
     const char                  axes[3] = {'x', 'y', 'z'};
     std::vector<Tensor<1, dim>> force(obstacles.size());
     double       min_distance = std::numeric_limits<double>::infinity();
@@ -624,15 +610,14 @@ namespace hyperelastic
       {
         const Tensor<1, dim> total = Utilities::MPI::sum(force[k], comm);
         for (unsigned int d = 0; d < dim; ++d)
-          s.more.push_back({"contact_force_" +
-                              std::to_string(obstacles[k].number) + "_" +
-                              axes[d],
-                            total[d]});
+          m.forces.push_back({"contact_force_" +
+                                std::to_string(obstacles[k].number) + "_" +
+                                axes[d],
+                              total[d]});
       }
-    s.more.push_back(
-      {"contact_min_distance", Utilities::MPI::min(min_distance, comm)});
-    s.more.push_back({"contact_active_pairs",
-                      static_cast<double>(Utilities::MPI::sum(active, comm))});
+    m.min_distance = Utilities::MPI::min(min_distance, comm);
+    m.active_pairs = static_cast<double>(Utilities::MPI::sum(active, comm));
+    return m;
   }
 
   template class ObstacleContact<2>;

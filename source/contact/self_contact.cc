@@ -6,6 +6,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/contact/barrier.h>
+#include <hyperelastic/contact/barrier_settings.h>
 #include <hyperelastic/contact/collision_detection.h>
 #include <hyperelastic/contact/self_contact.h>
 #include <hyperelastic/mesh/mesh_distribution.h>
@@ -31,42 +32,24 @@ namespace hyperelastic
     constexpr double coupling_reach = 4.;
 
     /// The potential w V(x_end) / c of a pair in the step's solved state
-    /// (end-state map c, force weight w; SteppedTerm::set_end_state_map) from
-    /// the pair's barrier @p b at x_end: energy w / c, gradient w, Hessian
+    /// (the end-state map @p map; SteppedTerm::set_end_state_map) from the
+    /// pair's barrier @p b at x_end: energy w / c, gradient w, Hessian
     /// (@p order 2) w c times those.
     template <std::size_t n>
     void
     to_solved_state(PairBarrier<n>    &b,
-                    const double       c,
-                    const double       w,
+                    const EndStateMap &map,
                     const unsigned int order)
     {
-      b.energy *= w / c;
+      b.energy *= map.energy_factor();
       for (double &g : b.gradient)
-        g *= w;
+        g *= map.gradient_factor();
       if (order == 2)
         for (auto &row : b.hessian)
           for (double &v : row)
-            v *= w * c;
+            v *= map.hessian_factor();
     }
 
-    /// Adds the time since construction to a sum.
-    class Stopwatch
-    {
-    public:
-      explicit Stopwatch(double &sum)
-          : sum(sum)
-      {
-      }
-      ~Stopwatch()
-      {
-        sum += timer.wall_time();
-      }
-
-    private:
-      double &sum;
-      Timer   timer;
-    };
   } // namespace
 
   template <int dim>
@@ -78,7 +61,30 @@ namespace hyperelastic
       , rank(Utilities::MPI::this_mpi_process(comm))
       , friction(parameters.self_contact_friction)
       , dynamic(dynamic)
-      , max_lagging_updates(parameters.friction_lagging_updates)
+      , lagging(parameters.friction_lagging_updates)
+  {
+    build_faces(gather_vertices(dof_handler));
+    // d_hat and kappa as for the obstacles.
+    Point<dim> lower = vertices.empty() ? Point<dim>() : vertices[0].X,
+               upper = lower;
+    for (const Vertex &v : vertices)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = std::min(lower[d], v.X[d]);
+          upper[d] = std::max(upper[d], v.X[d]);
+        }
+    const BarrierSettings settings =
+      barrier_settings(parameters, lower.distance(upper), moduli, dynamic);
+    d_hat       = settings.d_hat;
+    kappa       = settings.kappa;
+    eps_setting = settings.eps;
+
+    check_start();
+  }
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  SelfContact<dim>::gather_vertices(const DoFHandler<dim> &dof_handler)
   {
     // The owned boundary vertices (ghost cells too: an owned vertex may lie
     // only on a neighbour's boundary face) and the boundary faces of the
@@ -118,7 +124,6 @@ namespace hyperelastic
       packed.insert(packed.end(), data.begin(), data.end());
     const std::vector<std::vector<double>> all_vertices =
       Utilities::MPI::all_gather(comm, packed);
-    std::map<types::global_dof_index, unsigned int> index;
     for (unsigned int r = 0; r < all_vertices.size(); ++r)
       {
         if (r == rank)
@@ -133,17 +138,26 @@ namespace hyperelastic
                   all_vertices[r][i + dim + d]);
               }
             v.owner = r;
-            index.emplace(v.dofs[0], vertices.size());
             vertices.push_back(v);
           }
         if (r == rank)
           n_owned = vertices.size() - first_owned;
       }
+    return my_faces;
+  }
 
+  template <int dim>
+  void
+  SelfContact<dim>::build_faces(
+    const std::vector<types::global_dof_index> &my_faces)
+  {
     // The faces, and their measures shared by their vertices (edges: a
     // third of each adjacent triangle).
     const std::vector<std::vector<types::global_dof_index>> all_faces =
       Utilities::MPI::all_gather(comm, my_faces);
+    std::map<types::global_dof_index, unsigned int> index;
+    for (unsigned int k = 0; k < vertices.size(); ++k)
+      index.emplace(vertices[k].dofs[0], k);
     std::map<std::array<unsigned int, 2>, unsigned int> edge_index;
     for (const auto &list : all_faces)
       for (std::size_t i = 0; i < list.size(); i += dim)
@@ -182,26 +196,12 @@ namespace hyperelastic
                 edge_area[it->second] += measure / 3.;
               }
         }
+  }
 
-    // d_hat and kappa as for the obstacles.
-    Point<dim> lower = vertices.empty() ? Point<dim>() : vertices[0].X,
-               upper = lower;
-    for (const Vertex &v : vertices)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          lower[d] = std::min(lower[d], v.X[d]);
-          upper[d] = std::max(upper[d], v.X[d]);
-        }
-    d_hat = parameters.barrier_distance > 0. ? parameters.barrier_distance
-                                             : 1e-3 * lower.distance(upper);
-    kappa = parameters.barrier_stiffness > 0.
-              ? parameters.barrier_stiffness
-              : (moduli.lambda + 2. * moduli.mu) / d_hat;
-    // Friction's smoothing as for the obstacles.
-    eps_setting = parameters.friction_smoothing > 0.
-                    ? parameters.friction_smoothing
-                    : (dynamic ? d_hat : 0.1 * d_hat);
-
+  template <int dim>
+  void
+  SelfContact<dim>::check_start() const
+  {
     // The start: no two primitives within d_hat (their barrier would push
     // them apart before any load).
     std::vector<Point<dim>> X(vertices.size());
@@ -217,298 +217,31 @@ namespace hyperelastic
         if (d < closest)
           closest = d, worst = pair;
       }
+    // The closest pair's place, from the first rank that holds it.
     const double global_closest = Utilities::MPI::min(closest, comm);
-    if (global_closest < d_hat)
+    std::string  problem;
+    if (global_closest < d_hat && closest == global_closest)
       {
-        const unsigned int holder =
-          Utilities::MPI::min(closest == global_closest
-                                ? rank
-                                : Utilities::MPI::n_mpi_processes(comm),
-                              comm);
-        std::string message;
-        if (rank == holder)
-          {
-            std::ostringstream s;
-            s << "'Contact/Self contact': boundary "
-              << (dim == 2          ? "vertex and segment"
-                  : worst.edge_edge ? "edges"
-                                    : "vertex and triangle")
-              << " near (" << vertices[worst.v[0]].X << ") are "
-              << global_closest
-              << " apart in the reference configuration, closer than the "
-                 "barrier distance d_hat = "
-              << d_hat
-              << " (they would repel each other before any load): set "
-                 "'Contact/Barrier distance' below "
-              << global_closest << " or refine the mesh there";
-            message = s.str();
-          }
-        throw InputError(Utilities::MPI::broadcast(comm, message, holder));
+        std::ostringstream s;
+        s << "'Contact/Self contact': boundary "
+          << (dim == 2          ? "vertex and segment"
+              : worst.edge_edge ? "edges"
+                                : "vertex and triangle")
+          << " near (" << vertices[worst.v[0]].X << ") are "
+          << global_closest
+          << " apart in the reference configuration, closer than the "
+             "barrier distance d_hat = "
+          << d_hat
+          << " (they would repel each other before any load): set "
+             "'Contact/Barrier distance' below "
+          << global_closest << " or refine the mesh there";
+        problem = s.str();
       }
+    throw_input_error_of_first_rank(problem, comm);
   }
 
   template <int dim>
   SelfContact<dim>::~SelfContact() = default;
-
-  template <int dim>
-  std::vector<double>
-  SelfContact<dim>::exchange(const SendLists           &send,
-                             const std::vector<double> &owned_values,
-                             const unsigned int         m) const
-  {
-    Stopwatch           watch(spent.exchange);
-    std::vector<double> all(vertices.size() * m,
-                            std::numeric_limits<double>::quiet_NaN());
-    std::copy(owned_values.begin(),
-              owned_values.end(),
-              all.begin() + std::size_t(first_owned) * m);
-    std::map<unsigned int, std::vector<double>> out;
-    for (const auto &[q, list] : send)
-      {
-        std::vector<double> &data = out[q];
-        for (const unsigned int k : list)
-          {
-            data.push_back(first_owned + k);
-            data.insert(data.end(),
-                        owned_values.begin() + std::size_t(k) * m,
-                        owned_values.begin() + std::size_t(k + 1) * m);
-          }
-      }
-    for (const auto &[q, data] : Utilities::MPI::some_to_some(comm, out))
-      {
-        spent.received += data.size();
-        for (std::size_t i = 0; i < data.size(); i += m + 1)
-          std::copy(data.begin() + i + 1,
-                    data.begin() + i + 1 + m,
-                    all.begin() + std::size_t(data[i]) * m);
-      }
-    return all;
-  }
-
-  template <int dim>
-  typename SelfContact<dim>::State
-  SelfContact<dim>::state(const VectorType &u,
-                          const VectorType *direction,
-                          const double      reach) const
-  {
-    // The owned vertices' positions (end-state map applied), motions and
-    // (friction) start positions.
-    const bool          with_start = friction > 0. && !owned_start.empty();
-    const unsigned int  start_at   = direction ? 2 * dim : dim;
-    const unsigned int  m          = start_at + (with_start ? dim : 0);
-    std::vector<double> owned(std::size_t(n_owned) * m);
-    for (unsigned int k = 0; k < n_owned; ++k)
-      {
-        const Vertex &v = vertices[first_owned + k];
-        Point<dim>    x = v.X;
-        for (unsigned int d = 0; d < dim; ++d)
-          x[d] += u(v.dofs[d]);
-        if (end_factor != 1.)
-          x = owned_start[k] + end_factor * (x - owned_start[k]);
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            owned[k * m + d] = x[d];
-            if (direction)
-              owned[k * m + dim + d] = end_factor * (*direction)(v.dofs[d]);
-            if (with_start)
-              owned[k * m + start_at + d] = owned_start[k][d];
-          }
-      }
-    // This rank's region: the box of its vertices (swept along the motion),
-    // inflated by the reach and twice the longest boundary edge, so that
-    // every primitive within reach of its own arrives whole; doubled while
-    // a primitive with an owned vertex is incomplete (stretched edges).
-    State  s;
-    double margin = reach + 2. * longest_edge;
-    for (unsigned int attempt = 0;; ++attempt)
-      {
-        std::vector<std::array<double, 2 * dim>> box(n_owned);
-        std::array<double, 2 * dim>              region;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            region[d]       = std::numeric_limits<double>::max();
-            region[dim + d] = -std::numeric_limits<double>::max();
-          }
-        for (unsigned int k = 0; k < n_owned; ++k)
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              const double a  = owned[k * m + d],
-                           b  = a + (direction ? owned[k * m + dim + d] : 0.);
-              box[k][d]       = std::min(a, b);
-              box[k][dim + d] = std::max(a, b);
-              region[d]       = std::min(region[d], box[k][d] - margin);
-              region[dim + d] =
-                std::max(region[dim + d], box[k][dim + d] + margin);
-            }
-        {
-          Stopwatch  watch(spent.exchange);
-          const auto regions = Utilities::MPI::all_gather(comm, region);
-          s.send.clear();
-          for (unsigned int q = 0; q < regions.size(); ++q)
-            if (q != rank)
-              for (unsigned int k = 0; k < n_owned; ++k)
-                {
-                  bool inside = true;
-                  for (unsigned int d = 0; d < dim && inside; ++d)
-                    inside = box[k][dim + d] >= regions[q][d] &&
-                             box[k][d] <= regions[q][dim + d];
-                  if (inside)
-                    s.send[q].push_back(k);
-                }
-        }
-        const std::vector<double> all = exchange(s.send, owned, m);
-        s.x.assign(vertices.size(), Point<dim>());
-        s.p.assign(direction ? vertices.size() : 0, Tensor<1, dim>());
-        s.x0.assign(with_start ? vertices.size() : 0, Point<dim>());
-        for (unsigned int k = 0; k < vertices.size(); ++k)
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              s.x[k][d] = all[std::size_t(k) * m + d];
-              if (direction)
-                s.p[k][d] = all[std::size_t(k) * m + dim + d];
-              if (with_start)
-                s.x0[k][d] = all[std::size_t(k) * m + start_at + d];
-            }
-        bool       complete = true;
-        const auto check    = [&](const auto &list) {
-          bool mine = false, whole = true;
-          for (const unsigned int v : list)
-            {
-              mine  = mine || vertices[v].owner == rank;
-              whole = whole && !std::isnan(s.x[v][0]);
-            }
-          complete = complete && (!mine || whole);
-        };
-        for (const auto &f : faces)
-          check(f);
-        if (Utilities::MPI::min(complete ? 1 : 0, comm) == 1 || attempt > 20)
-          break;
-        margin *= 2.;
-      }
-    return s;
-  }
-
-  template <int dim>
-  typename SelfContact<dim>::Boxes
-  SelfContact<dim>::boxes(const std::vector<Point<dim>>     &x,
-                          const std::vector<Tensor<1, dim>> *p,
-                          const double                       margin) const
-  {
-    Stopwatch watch(spent.broad);
-    Boxes     b;
-    b.vertex.reserve(vertices.size());
-    for (unsigned int k = 0; k < vertices.size(); ++k)
-      {
-        BoundingBox<dim> box(std::make_pair(x[k], x[k]));
-        if (p)
-          {
-            const Point<dim> end = x[k] + (*p)[k];
-            box.merge_with(BoundingBox<dim>(std::make_pair(end, end)));
-          }
-        box.extend(margin);
-        b.vertex.push_back(box);
-      }
-    const auto merged = [&](const auto &indices) {
-      BoundingBox<dim> box = b.vertex[indices[0]];
-      for (const unsigned int v : indices)
-        box.merge_with(b.vertex[v]);
-      return box;
-    };
-    for (const auto &f : faces)
-      b.face.push_back(merged(f));
-    for (const auto &e : edges)
-      b.edge.push_back(merged(e));
-    return b;
-  }
-
-  template <int dim>
-  std::vector<typename SelfContact<dim>::Pair>
-  SelfContact<dim>::candidates(const Boxes &b) const
-  {
-    Stopwatch watch(spent.broad);
-    using Entry        = std::pair<BoundingBox<dim>, unsigned int>;
-    const auto is_mine = [&](const unsigned int v) {
-      return v - first_owned < n_owned;
-    };
-    const auto any_mine = [&](const auto &list) {
-      return std::any_of(list.begin(), list.end(), is_mine);
-    };
-    const auto shares = [](const auto &list, const unsigned int v) {
-      return std::find(list.begin(), list.end(), v) != list.end();
-    };
-    // The vertices this rank has not received (far from its own) are NaN.
-    const auto known = [&](const unsigned int v) {
-      return !std::isnan(b.vertex[v].get_boundary_points().first[0]);
-    };
-    const auto all_known = [&](const auto &list) {
-      return std::all_of(list.begin(), list.end(), known);
-    };
-    std::vector<Pair> result;
-
-    // Vertex-face pairs: the owned vertices against every face, and every
-    // vertex owned elsewhere against the faces with an owned vertex.
-    {
-      std::vector<Entry> entries;
-      for (unsigned int f = 0; f < faces.size(); ++f)
-        if (all_known(faces[f]))
-          entries.emplace_back(b.face[f], f);
-      const RTree<Entry> tree = pack_rtree(entries);
-      std::vector<Entry> found;
-      for (unsigned int v = 0; v < vertices.size(); ++v)
-        {
-          if (!known(v))
-            continue;
-          found.clear();
-          tree.query(boost::geometry::index::intersects(b.vertex[v]),
-                     std::back_inserter(found));
-          for (const auto &[box, f] : found)
-            {
-              const auto &face = faces[f];
-              if (shares(face, v) || !(is_mine(v) || any_mine(face)))
-                continue;
-              Pair pair;
-              pair.v[0] = v;
-              for (unsigned int d = 0; d < dim; ++d)
-                pair.v[d + 1] = face[d];
-              pair.weight = vertices[v].area;
-              result.push_back(pair);
-            }
-        }
-    }
-    // Edge-edge pairs (3D), each once: from the lower edge of two with
-    // owned vertices.
-    if constexpr (dim == 3)
-      {
-        std::vector<Entry> entries;
-        for (unsigned int e = 0; e < edges.size(); ++e)
-          if (all_known(edges[e]))
-            entries.emplace_back(b.edge[e], e);
-        const RTree<Entry> tree = pack_rtree(entries);
-        std::vector<Entry> found;
-        for (unsigned int e = 0; e < edges.size(); ++e)
-          {
-            if (!any_mine(edges[e]) || !all_known(edges[e]))
-              continue;
-            found.clear();
-            tree.query(boost::geometry::index::intersects(b.edge[e]),
-                       std::back_inserter(found));
-            for (const auto &[box, o] : found)
-              {
-                if (o == e || shares(edges[o], edges[e][0]) ||
-                    shares(edges[o], edges[e][1]) ||
-                    (o < e && any_mine(edges[o])))
-                  continue;
-                Pair pair;
-                pair.v = {{edges[e][0], edges[e][1], edges[o][0], edges[o][1]}};
-                pair.edge_edge = true;
-                pair.weight    = 0.5 * (edge_area[e] + edge_area[o]);
-                pair.mollifier = 1e-3 * edge_length2[e] * edge_length2[o];
-                result.push_back(pair);
-              }
-          }
-      }
-    return result;
-  }
 
   template <int dim>
   typename SelfContact<dim>::Coordinates
@@ -558,7 +291,7 @@ namespace hyperelastic
           }
         if (b.distance >= d_hat)
           continue;
-        to_solved_state(b, end_factor, force_weight, order);
+        to_solved_state(b, end_state, order);
         f(pair, b);
       }
     if (min_distance)
@@ -745,10 +478,9 @@ namespace hyperelastic
   void
   SelfContact<dim>::begin_step(const VectorType &u, const double t_start)
   {
-    end_factor      = 1.;
-    force_weight    = 1.;
-    step_start      = t_start;
-    lagging_updates = 0;
+    end_state  = EndStateMap();
+    step_start = t_start;
+    lagging.begin_step();
     owned_start.resize(n_owned);
     for (unsigned int k = 0; k < n_owned; ++k)
       {
@@ -812,7 +544,7 @@ namespace hyperelastic
     if (!(friction > 0.) || lagged.empty())
       return;
     Stopwatch    watch(spent.narrow);
-    const double h   = end_factor * (t - std::min(step_start, t));
+    const double h   = end_state.c * (t - std::min(step_start, t));
     const double eps = dynamic ? eps_setting * h : eps_setting;
     if (!(eps > 0.))
       return; // no time has passed: no slip
@@ -834,7 +566,7 @@ namespace hyperelastic
           continue;
         PairBarrier<n_coordinates> b = pair_friction<dim>(
           x, x0, l.beta, l.normal, friction * l.normal_force, eps, order);
-        to_solved_state(b, end_factor, force_weight, order);
+        to_solved_state(b, end_state, order);
         f(l.pair, b);
       }
   }
@@ -843,7 +575,7 @@ namespace hyperelastic
   bool
   SelfContact<dim>::update_lagged(const VectorType &u, const double)
   {
-    if (!(friction > 0.) || lagging_updates >= max_lagging_updates)
+    if (!(friction > 0.) || !lagging.may_update())
       return false;
     const auto          scope = timed_section(timer, "contact");
     std::vector<Lagged> next  = lag(near_state(u));
@@ -865,12 +597,9 @@ namespace hyperelastic
       }
     for (const auto &[pair, force] : before)
       change = std::max(change, force);
-    change  = Utilities::MPI::max(change, comm);
-    largest = Utilities::MPI::max(largest, comm);
-    if (!(change > 1e-3 * largest))
+    if (!lagging.accept(change, largest, comm))
       return false;
     lagged = std::move(next);
-    ++lagging_updates;
     return true;
   }
 
@@ -924,8 +653,8 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
-  SelfContact<dim>::summarize(const VectorType &u, StepSummary<dim> &s) const
+  ContactMeasures
+  SelfContact<dim>::measure(const VectorType &u) const
   {
     double       closest = d_hat;
     unsigned int active  = 0;
@@ -936,18 +665,10 @@ namespace hyperelastic
         active += counted_here(pair) ? 1 : 0;
       },
       &closest);
-    closest               = Utilities::MPI::min(closest, comm);
-    const double n_active = Utilities::MPI::sum(active, comm);
-    bool         had_min = false, had_count = false;
-    for (SummaryColumn &c : s.more)
-      if (c.name == "contact_min_distance")
-        c.value = std::min(c.value, closest), had_min = true;
-      else if (c.name == "contact_active_pairs")
-        c.value += n_active, had_count = true;
-    if (!had_min)
-      s.more.push_back({"contact_min_distance", closest});
-    if (!had_count)
-      s.more.push_back({"contact_active_pairs", n_active});
+    ContactMeasures m;
+    m.min_distance = Utilities::MPI::min(closest, comm);
+    m.active_pairs = Utilities::MPI::sum(active, comm);
+    return m;
   }
 
   template class SelfContact<2>;

@@ -191,9 +191,10 @@ namespace hyperelastic
 
   template <int dim>
   void
-  ImplicitDynamics<dim>::summarize(const VectorType &u_ghosted,
-                                   StepSummary<dim> &s) const
+  ImplicitDynamics<dim>::add_columns(const ReportedState &state,
+                                     StepSummary<dim>    &s)
   {
+    const VectorType &u_ghosted = state.u;
     // Potential energy without the step's inertia and damping terms; kinetic
     // energy and momenta of the converged motion.
     s.energy -= inertia->energy(u_ghosted, s.load_factor);

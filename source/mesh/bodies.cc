@@ -2,6 +2,7 @@
 // of each rank's cells, joined across ranks through the vertices they share.
 #include <deal.II/base/mpi.h>
 
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/bodies.h>
 
 #include <algorithm>
@@ -187,8 +188,48 @@ namespace hyperelastic
     return bodies;
   }
 
+  template <int dim>
+  void
+  check_supports(const DoFHandler<dim>              &dof_handler,
+                 const std::set<types::boundary_id> &dirichlet_ids,
+                 const bool                          contact_may_hold,
+                 const unsigned int                  max_sections)
+  {
+    if (dirichlet_ids.empty())
+      throw InputError("no Dirichlet condition is set (sections 'Dirichlet 1' "
+                       "... 'Dirichlet " +
+                       std::to_string(max_sections) +
+                       "'): rigid-body motions would be free and the "
+                       "quasi-static problem singular (in dynamics, "
+                       "'Time integration/Scheme', the mass makes it regular)");
+    // Each body must be held: a mesh may hold several (a body clamped,
+    // another pressed onto it).
+    if (contact_may_hold)
+      return;
+    const std::vector<Body<dim>> bodies = find_bodies(dof_handler, dirichlet_ids);
+    for (unsigned int k = 0; k < bodies.size(); ++k)
+      if (!bodies[k].held)
+        throw InputError(
+          bodies[k].describe(k + 1) + " of the mesh's " +
+          std::to_string(bodies.size()) +
+          " has neither a Dirichlet condition nor a possible contact: it "
+          "could move as a rigid body and the quasi-static problem is "
+          "singular. Give one of its boundary faces a Dirichlet condition, "
+          "or let contact hold it ('Contact/Self contact' or an obstacle)");
+  }
+
   template struct Body<2>;
   template struct Body<3>;
+  template void
+  check_supports(const DoFHandler<2> &,
+                 const std::set<types::boundary_id> &,
+                 bool,
+                 unsigned int);
+  template void
+  check_supports(const DoFHandler<3> &,
+                 const std::set<types::boundary_id> &,
+                 bool,
+                 unsigned int);
   template std::vector<Body<2>>
   find_bodies(const DoFHandler<2> &, const std::set<types::boundary_id> &);
   template std::vector<Body<3>>

@@ -51,6 +51,12 @@ namespace hyperelastic
   throw_convergence_failure_if_any(const std::string &local_error,
                                    const MPI_Comm     comm);
 
+  /// If @p local_problem is non-empty on any rank, throws InputError on every
+  /// rank with the message of the lowest such rank. Collective over @p comm.
+  void
+  throw_input_error_of_first_rank(const std::string &local_problem,
+                                  const MPI_Comm     comm);
+
   /// Runs @p body and turns exceptions into messages and exit codes as
   /// described above. Returns the exit code.
   int

@@ -1,6 +1,7 @@
 // An optional scope of a timer section: parts that may run with or without
-// a TimerOutput (a load term in a scene times its work, the same term in a
-// unit test does not) open it the same way.
+// a TimerOutput (an energy term in a scene times its work, the same term in
+// a unit test does not) open it the same way; and a stopwatch that adds its
+// life to a sum.
 #pragma once
 
 #include <deal.II/base/timer.h>
@@ -21,4 +22,21 @@ namespace hyperelastic
                                                        name);
     return std::nullopt;
   }
+  /// Adds the wall time of its life to @p sum (a part's accumulated cost,
+  /// as self contact reports it).
+  class Stopwatch
+  {
+  public:
+    explicit Stopwatch(double &sum)
+        : sum(sum)
+    {}
+    ~Stopwatch()
+    {
+      sum += timer.wall_time();
+    }
+
+  private:
+    double        &sum;
+    dealii::Timer  timer;
+  };
 } // namespace hyperelastic

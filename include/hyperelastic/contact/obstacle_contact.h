@@ -39,12 +39,14 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <hyperelastic/base/timed_section.h>
+#include <hyperelastic/contact/contact_measures.h>
 #include <hyperelastic/contact/contact_parameters.h>
+#include <hyperelastic/contact/end_state_map.h>
+#include <hyperelastic/contact/friction_lagging.h>
 #include <hyperelastic/contact/obstacle_surface.h>
 #include <hyperelastic/assembly/energy_term.h>
 #include <hyperelastic/assembly/term_capabilities.h>
 #include <hyperelastic/materials/material.h>
-#include <hyperelastic/output/step_summary.h>
 
 #include <algorithm>
 #include <array>
@@ -119,8 +121,7 @@ namespace hyperelastic
     void
     set_end_state_map(double c, double weight) override
     {
-      end_factor   = c;
-      force_weight = weight;
+      end_state = {c, weight};
     }
     bool
     prepare_motion(double t) override;
@@ -129,11 +130,11 @@ namespace hyperelastic
     bool
     update_lagged(const VectorType &u, double t) override;
 
-    /// The CSV columns contact_force_<k>_<axis> (the force obstacle k
-    /// exerts on the body), contact_min_distance and contact_active_pairs
-    /// at @p u (ghosted). Collective.
-    void
-    summarize(const VectorType &u, double t, StepSummary<dim> &summary) const;
+    /// The force each obstacle exerts on the body (columns
+    /// contact_force_<k>_<axis>), the smallest distance and the active
+    /// pairs at @p u (ghosted). Collective.
+    ContactMeasures
+    measure(const VectorType &u, double t) const;
 
     /// The nodal contact forces on the body at @p u (owned entries;
     /// barrier and friction). Collective.
@@ -262,7 +263,7 @@ namespace hyperelastic
     double
     end_time(double t) const
     {
-      return std::isfinite(reached) ? step_start + end_factor * (t - step_start)
+      return std::isfinite(reached) ? step_start + end_state.c * (t - step_start)
                                     : t;
     }
 
@@ -284,21 +285,19 @@ namespace hyperelastic
     double                                                   d_hat_value = 0.;
     double                                                   kappa       = 0.;
     /// eps (quasi-static) or eps_v (dynamics).
-    double             eps_setting = 0.;
-    const unsigned int max_lagging_updates;
+    double eps_setting = 0.;
+    /// Friction's lagging updates ('Friction lagging updates' a step).
+    FrictionLagging lagging;
 
     /// The step's start, the obstacle time reached within the step (+inf
     /// outside a step: the obstacles stand at t), the vertices' positions
-    /// at the start, the lagged friction [a * n_obstacles + k] and the
-    /// lagging updates made in this step.
+    /// at the start and the lagged friction [a * n_obstacles + k].
     double step_start = 0.;
     double reached    = std::numeric_limits<double>::infinity();
     std::vector<dealii::Point<dim>> start_positions;
     std::vector<Lagged>             lagged;
-    unsigned int                    lagging_updates = 0;
-    /// c of the end-state map (set_end_state_map).
-    double               end_factor = 1.;
-    double               force_weight = 1.; ///< of set_end_state_map()
+    /// The step's end-state map (set_end_state_map).
+    EndStateMap end_state;
     dealii::TimerOutput *timer      = nullptr;
   };
 } // namespace hyperelastic

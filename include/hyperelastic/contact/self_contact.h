@@ -49,13 +49,15 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <hyperelastic/base/timed_section.h>
+#include <hyperelastic/contact/contact_measures.h>
 #include <hyperelastic/contact/contact_parameters.h>
+#include <hyperelastic/contact/end_state_map.h>
+#include <hyperelastic/contact/friction_lagging.h>
 #include <hyperelastic/contact/pair_friction.h>
 #include <hyperelastic/contact/primitive_distance.h>
 #include <hyperelastic/assembly/energy_term.h>
 #include <hyperelastic/assembly/term_capabilities.h>
 #include <hyperelastic/materials/material.h>
-#include <hyperelastic/output/step_summary.h>
 
 #include <array>
 #include <map>
@@ -126,8 +128,7 @@ namespace hyperelastic
     void
     set_end_state_map(double c, double weight) override
     {
-      end_factor   = c;
-      force_weight = weight;
+      end_state = {c, weight};
     }
 
     /// Friction: lags the normal forces, normals and closest points of the
@@ -142,11 +143,10 @@ namespace hyperelastic
     void
     add_couplings(dealii::DynamicSparsityPattern &pattern) const override;
 
-    /// Merges the self pairs into the CSV columns contact_min_distance
-    /// (capped at d_hat) and contact_active_pairs (adding them if the
-    /// obstacles did not). Collective.
-    void
-    summarize(const VectorType &u, StepSummary<dim> &summary) const;
+    /// The smallest distance of the self pairs (capped at d_hat) and the
+    /// number of active ones at @p u (ghosted). Collective.
+    ContactMeasures
+    measure(const VectorType &u) const;
 
     /// Adds the nodal contact forces of the self pairs at @p u and time
     /// @p t (barrier and friction; owned entries). Collective.
@@ -220,6 +220,18 @@ namespace hyperelastic
       double                             weight    = 0.; ///< w
       double mollifier = 0.; ///< eps_x (edge-edge), 0 otherwise
     };
+
+    /// The set-up's steps: every rank's boundary vertices (numbered rank
+    /// by rank; returns this rank's boundary faces as first dofs), the
+    /// faces and edges with their measures (collective), and the check that
+    /// no two primitives start within d_hat (an InputError naming the
+    /// place; collective).
+    std::vector<dealii::types::global_dof_index>
+    gather_vertices(const dealii::DoFHandler<dim> &dof_handler);
+    void
+    build_faces(const std::vector<dealii::types::global_dof_index> &my_faces);
+    void
+    check_start() const;
 
     /// The boxes of every vertex, face and edge, around the positions @p x
     /// (and x + @p p if given: the swept boxes) inflated by @p margin.
@@ -347,8 +359,8 @@ namespace hyperelastic
     double longest_edge = 0.;
 
     double d_hat = 0., kappa = 0.;
-    double end_factor    = 1.;
-    double force_weight    = 1.; ///< of set_end_state_map()
+    /// The step's end-state map (set_end_state_map).
+    EndStateMap end_state;
     /// The owned boundary vertices' positions at the step's start (the
     /// end-state map, friction's slip), and the step's start time.
     std::vector<dealii::Point<dim>> owned_start;
@@ -357,8 +369,8 @@ namespace hyperelastic
     /// Friction: mu, the smoothing (a slip length, or with dynamics a slip
     /// velocity), the lagged pairs and the updates made this step.
     double              friction = 0., eps_setting = 0.;
-    bool                dynamic             = false;
-    unsigned int        max_lagging_updates = 0, lagging_updates = 0;
+    bool                dynamic = false;
+    FrictionLagging     lagging;
     std::vector<Lagged> lagged;
     /// The vertex couplings (owned vertex, other vertex) in the tangent's
     /// sparsity.

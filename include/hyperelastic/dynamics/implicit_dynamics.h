@@ -53,18 +53,21 @@ namespace hyperelastic
                 VectorType           &u,
                 VectorType           &u_ghosted) override;
 
+    /// The potential energy without the step's inertia and damping terms,
+    /// the kinetic energy and the momenta.
     void
-    summarize(const VectorType &u_ghosted,
-              StepSummary<dim> &summary) const override;
+    add_columns(const ReportedState &state, StepSummary<dim> &summary) override;
 
     /// Every 'Output every' steps and the last one.
     bool
     writes_fields(unsigned int step, double t) const override;
 
-    const VectorType *
-    output_velocity() const override
+    /// The velocity.
+    void
+    add_nodal_fields(const ReportedState &,
+                     std::vector<NodalField> &fields) override
     {
-      return &velocity_ghosted;
+      fields.push_back({"velocity", &velocity_ghosted});
     }
 
     void

@@ -45,6 +45,11 @@ namespace hyperelastic
       return solved;
     }
 
+    /// No columns of its own: the energy is the total potential.
+    void
+    add_columns(const ReportedState &, StepSummary<dim> &) override
+    {}
+
     unsigned int
     n_predictions() const override
     {

@@ -15,6 +15,7 @@
 #include <hyperelastic/base/linear_algebra.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/output/checkpoint_file.h>
+#include <hyperelastic/output/step_reporter.h>
 #include <hyperelastic/output/step_summary.h>
 #include <hyperelastic/parameters.h>
 #include <hyperelastic/solvers/load_stepping.h>
@@ -50,8 +51,11 @@ namespace hyperelastic
     dealii::TimerOutput &timer;
   };
 
+  /// A driver also reports (StepReporter): its columns of a converged step
+  /// (the energy without its own terms; in dynamics the kinetic energy and
+  /// momenta) and its nodal fields (the velocity).
   template <int dim>
-  class TimeStepping
+  class TimeStepping : public StepReporter<dim>
   {
   public:
     virtual ~TimeStepping() = default;
@@ -100,27 +104,12 @@ namespace hyperelastic
                 VectorType           &u,
                 VectorType           &u_ghosted) = 0;
 
-    /// Completes the summary of a converged step at @p u_ghosted: the
-    /// energy without the step's own terms, the driver's columns.
-    virtual void
-    summarize(const VectorType &u_ghosted, StepSummary<dim> &summary) const
-    {
-      (void)u_ghosted, (void)summary;
-    }
-
     /// Whether converged step @p step at @p t writes the fields.
     virtual bool
     writes_fields(unsigned int step, double t) const
     {
       (void)step, (void)t;
       return true;
-    }
-
-    /// The velocity to write with the fields (ghosted), or null.
-    virtual const VectorType *
-    output_velocity() const
-    {
-      return nullptr;
     }
 
     /// How many steps started from an (admissible) prediction.

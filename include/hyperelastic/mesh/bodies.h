@@ -36,4 +36,16 @@ namespace hyperelastic
   std::vector<Body<dim>>
   find_bodies(const dealii::DoFHandler<dim>              &dof_handler,
               const std::set<dealii::types::boundary_id> &dirichlet_ids);
+
+  /// The supports of a problem that needs them (quasi-static): throws
+  /// InputError if there is no Dirichlet condition at all (@p max_sections:
+  /// the scene's last 'Dirichlet k' section, for the message) or, unless
+  /// contact may hold bodies (@p contact_may_hold), if a body of the mesh
+  /// has no boundary face with one of the @p dirichlet_ids. Collective.
+  template <int dim>
+  void
+  check_supports(const dealii::DoFHandler<dim>              &dof_handler,
+                 const std::set<dealii::types::boundary_id> &dirichlet_ids,
+                 bool                                        contact_may_hold,
+                 unsigned int                                max_sections);
 } // namespace hyperelastic

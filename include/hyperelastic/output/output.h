@@ -11,6 +11,7 @@
 
 #include <hyperelastic/output/cell_fields.h>
 #include <hyperelastic/output/output_parameters.h>
+#include <hyperelastic/output/step_reporter.h>
 #include <hyperelastic/output/step_summary.h>
 
 #include <fstream>
@@ -32,13 +33,9 @@ namespace hyperelastic
                  MPI_Comm                comm,
                  int                     resumed_rows = -1);
 
-    /// A vector field on the nodes besides the displacement ("velocity"
-    /// in dynamics, "contact_force" with contact), ghosted.
-    struct NodalField
-    {
-      std::string                                  name;
-      const dealii::TrilinosWrappers::MPI::Vector *values;
-    };
+    /// A vector field on the nodes besides the displacement
+    /// (output/step_reporter.h).
+    using NodalField = hyperelastic::NodalField;
 
     /// Writes <base>_<step>.<rank>.vtu, <base>_<step>.pvtu and rewrites
     /// <base>.pvd ('Write VTU'); with 'Write HDF5' <base>_<step>.h5 (and

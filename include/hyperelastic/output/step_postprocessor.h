@@ -12,6 +12,7 @@
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/output/output_parameters.h>
 #include <hyperelastic/output/point_values.h>
+#include <hyperelastic/output/step_reporter.h>
 #include <hyperelastic/output/step_summary.h>
 
 #include <memory>
@@ -21,7 +22,7 @@
 namespace hyperelastic
 {
   template <int dim>
-  class StepPostprocessor
+  class StepPostprocessor : public StepReporter<dim>
   {
   public:
     /// Finds the dofs of each Dirichlet boundary id and locates the output
@@ -33,7 +34,7 @@ namespace hyperelastic
                       const BoundaryConditions<dim> &boundary_conditions,
                       const OutputParameters        &output,
                       const dealii::IndexSet        &pressure_dofs);
-    ~StepPostprocessor();
+    ~StepPostprocessor() override;
 
     /// Fills the reactions from @p residual = f_int - f_ext (owned entries),
     /// the bounding box, the point displacements and the pressure range
@@ -42,6 +43,13 @@ namespace hyperelastic
     measure(const VectorType &u,
             const VectorType &residual,
             StepSummary<dim> &summary) const;
+
+    /// measure() at the converged @p state (its residual forces).
+    void
+    add_columns(const ReportedState &state, StepSummary<dim> &summary) override
+    {
+      measure(state.u, state.residual_forces, summary);
+    }
 
   private:
     const dealii::DoFHandler<dim> &dof_handler;

@@ -1,0 +1,141 @@
+// Problem's output: the run's header, the lines and CSV row of each converged
+// step, and the frames (VTU/HDF5 fields and surface files).
+#include <deal.II/base/mpi.h>
+
+#include <hyperelastic/problem.h>
+
+#include <chrono>
+#include <iomanip>
+
+namespace hyperelastic
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  Problem<dim>::print_header() const
+  {
+    pcout << "hyperelastic: " << dim << "D" << (dim == 2 ? " plane strain" : "")
+          << ", " << formulation->element_description() << ", "
+          << triangulation->n_global_active_cells() << " cells, "
+          << dof_handler.n_dofs() << " unknowns, "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n"
+          << "material: " << parameters.material.model
+          << formulation->material_note()
+          << " (mu = " << material->small_strain_moduli().mu
+          << ", lambda = " << material->small_strain_moduli().lambda << ")\n"
+          << "linear solver: " << linear_solver.description() << std::endl;
+    if (!elasticity->energy_terms().empty())
+      {
+        pcout << "loads:";
+        for (const auto &term : elasticity->energy_terms())
+          pcout << (&term == &elasticity->energy_terms().front() ? " " : ", ")
+                << term->name()
+                << (term->kind() == TermKind::dead ? " (dead)"
+                    : term->kind() == TermKind::conservative
+                      ? " (follower, conservative)"
+                      : " (follower)");
+        pcout << std::endl;
+      }
+    if (pcout.is_active())
+      for (const StepReporter<dim> *reporter : reporters)
+        reporter->print_header(pcout.get_stream());
+    const std::string warning = formulation->warning(*material);
+    if (!warning.empty())
+      pcout << warning << std::endl;
+  }
+
+  template <int dim>
+  void
+  Problem<dim>::report_step(const LoadStep                              &step,
+                            const NewtonResult                          &result,
+                            const std::chrono::steady_clock::time_point &start)
+  {
+    const StepSummary<dim> summary = summarize(step, result);
+    writer->write_summary(summary.columns());
+    const unsigned int every = parameters.output.checkpoint_every;
+    if (every > 0 && step.step % every == 0)
+      write_checkpoint(step);
+    step_summaries.push_back(summary);
+    if (step_observer)
+      step_observer(summary);
+    pcout << "   converged in " << result.iterations()
+          << " Newton iterations (" << result.linear_iterations() << " linear";
+    if (summary.backtracks > 0)
+      pcout << ", " << summary.backtracks << " line-search backtracks";
+    pcout << "); energy " << std::setprecision(10) << summary.energy
+          << ", min J " << summary.min_J << std::setprecision(6) << std::endl;
+
+    // Progress: the elapsed wall time, and the remaining time estimated
+    // from the fraction of the load factor (or time) done, where the run's
+    // end is known in t (not along an arc-length path, whose t may fall).
+    const bool along_path =
+      !parameters.time_integration.dynamic() &&
+      parameters.load_stepping.method == LoadControl::arc_length;
+    const double t_end =
+      parameters.time_integration.dynamic()
+        ? parameters.time_integration.end_time
+        : (along_path ? parameters.load_stepping.maximum_load_factor : 1.);
+    const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+    // The fraction done since this run started (a restart: since the
+    // checkpoint).
+    const double t0   = resume_point ? resume_point->t : 0.;
+    const double done = (step.load_factor - t0) / (t_end - t0);
+    pcout << "   progress: t = " << step.load_factor << " of " << t_end << ", "
+          << std::fixed << std::setprecision(1) << elapsed << " s elapsed";
+    if (!along_path && done > 0. && done < 1.)
+      pcout << ", about " << elapsed * (1. - done) / done << " s to go";
+    pcout << std::defaultfloat << std::setprecision(6) << std::endl;
+  }
+
+  template <int dim>
+  void
+  Problem<dim>::write_fields(const unsigned int step)
+  {
+    TimerOutput::Scope output_scope(timer, "output");
+    CellFields         fields;
+    if (material3d)
+      fields = compute_cell_fields(
+        dof_handler, mapping, *material, *material3d, system->solution());
+    if (surface)
+      surface->write(n_frames,
+                     system->load_factor(),
+                     system->solution(),
+                     material3d ? &fields.von_mises : nullptr);
+    ++n_frames;
+    if (!parameters.output.write_vtu && !parameters.output.write_hdf5)
+      return;
+    std::vector<NodalField> nodal;
+    const ReportedState     state{system->solution(),
+                              system->residual_forces(),
+                              system->load_factor()};
+    for (StepReporter<dim> *reporter : reporters)
+      reporter->add_nodal_fields(state, nodal);
+    writer->write_fields(step,
+                         system->load_factor(),
+                         dof_handler,
+                         mapping,
+                         system->solution(),
+                         fields,
+                         nodal);
+  }
+
+  template void
+  Problem<2>::print_header() const;
+  template void
+  Problem<3>::print_header() const;
+  template void
+  Problem<2>::report_step(const LoadStep &,
+                          const NewtonResult &,
+                          const std::chrono::steady_clock::time_point &);
+  template void
+  Problem<3>::report_step(const LoadStep &,
+                          const NewtonResult &,
+                          const std::chrono::steady_clock::time_point &);
+  template void
+  Problem<2>::write_fields(unsigned int);
+  template void
+  Problem<3>::write_fields(unsigned int);
+} // namespace hyperelastic
