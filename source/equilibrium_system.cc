@@ -6,7 +6,7 @@
 
 #include <hyperelastic/assembly/rest_stiffness.h>
 #include <hyperelastic/equilibrium_system.h>
-#include <hyperelastic/output/inverted_cells.h>
+#include <hyperelastic/solvers/inverted_cell_policy.h>
 
 #include <algorithm>
 #include <cmath>
