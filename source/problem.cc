@@ -34,7 +34,10 @@ namespace hyperelastic
       , timer(pcout,
               print ? TimerOutput::summary : TimerOutput::never,
               TimerOutput::wall_times)
-      , formulation(create_formulation<dim>(parameters))
+      , formulation(create_formulation<dim>({parameters.problem,
+                                             parameters.material,
+                                             parameters.linear_solver,
+                                             parameters.time_integration}))
       , triangulation(
           Utilities::MPI::n_mpi_processes(comm) == 1 ?
             std::unique_ptr<Triangulation<dim>>(
