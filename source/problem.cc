@@ -39,11 +39,11 @@ namespace hyperelastic
                                              parameters.linear_solver,
                                              parameters.time_integration}))
       , triangulation(
-          Utilities::MPI::n_mpi_processes(comm) == 1 ?
-            std::unique_ptr<Triangulation<dim>>(
-              std::make_unique<SerialTriangulation<dim>>(comm)) :
-            std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
-              comm))
+          Utilities::MPI::n_mpi_processes(comm) == 1
+            ? std::unique_ptr<Triangulation<dim>>(
+                std::make_unique<SerialTriangulation<dim>>(comm))
+            : std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
+                comm))
       , fe(formulation->finite_element())
       , mapping(FE_SimplexP<dim>(1))
       , dof_handler(*triangulation)
@@ -104,7 +104,9 @@ namespace hyperelastic
                                                parameters.output,
                                                pressure_dofs);
     system = std::make_unique<EquilibriumSystem<dim>>(
-      typename EquilibriumSystem<dim>::Parts{parameters,
+      typename EquilibriumSystem<dim>::Parts{parameters.newton,
+                                             parameters.linear_solver,
+                                             parameters.material.model,
                                              dof_handler,
                                              mapping,
                                              *material,
@@ -156,13 +158,18 @@ namespace hyperelastic
         self_contact = term.get();
         elasticity->add_term(std::move(term));
       }
-    stepping = create_time_stepping<dim>({parameters,
-                                          dof_handler,
-                                          mapping,
-                                          *material,
-                                          *elasticity,
-                                          system->free_dofs(),
-                                          timer});
+    stepping = create_time_stepping<dim>(
+      {parameters.time_integration,
+       parameters.load_stepping,
+       parameters.loading,
+       parameters.contact,
+       parameters.material.viscoelasticity.quasi_static_duration,
+       dof_handler,
+       mapping,
+       *material,
+       *elasticity,
+       system->free_dofs(),
+       timer});
     if (boundary_conditions->dirichlet.empty() && stepping->needs_supports())
       throw InputError("no Dirichlet condition is set (sections 'Dirichlet 1' "
                        "... 'Dirichlet " +
