@@ -6,7 +6,7 @@
 
 #include <hyperelastic/assembly/rest_stiffness.h>
 #include <hyperelastic/equilibrium_system.h>
-#include <hyperelastic/output/inverted_cells.h>
+#include <hyperelastic/solvers/inverted_cell_policy.h>
 
 #include <algorithm>
 #include <cmath>
@@ -146,13 +146,12 @@ namespace hyperelastic
     }
     TimerOutput::Scope scope(parts.timer, "linear solve");
     double             tolerance =
-      std::max(forcing, parts.parameters.linear_solver.relative_tolerance);
+      std::max(forcing, parts.linear_solver_parameters.relative_tolerance);
     // A linear problem takes this one solve, and no Newton iteration
     // follows to correct it: it also meets Newton's relative residual
     // tolerance where that is the tighter one.
     if (is_linear() && forcing == 0.)
-      tolerance = std::min(tolerance,
-                           parts.parameters.newton.relative_residual_tolerance);
+      tolerance = std::min(tolerance, parts.newton.relative_residual_tolerance);
     update = 0.;
     const unsigned int iterations =
       parts.linear_solver.solve(tangent, update, rhs, tolerance);
@@ -237,7 +236,7 @@ namespace hyperelastic
         extension,
         update,
         extension_rhs,
-        parts.parameters.linear_solver.relative_tolerance);
+        parts.linear_solver_parameters.relative_tolerance);
       increment_constraints.distribute(update);
     }
     // Both updates meet the same prescribed values, so their energies
@@ -356,8 +355,8 @@ namespace hyperelastic
     min_J          = inverted.min_J;
     inverted_cells = inverted.n_cells;
     judge_inverted_cells(inverted,
-                         parts.parameters.newton,
-                         parts.parameters.material.model,
+                         parts.newton,
+                         parts.material_model,
                          parts.material.defined_for_inverted_elements(),
                          parts.pcout);
   }
@@ -529,7 +528,7 @@ namespace hyperelastic
     TimerOutput::Scope scope(parts.timer, "linear solve");
     x                             = 0.;
     const unsigned int iterations = parts.linear_solver.solve(
-      tangent, x, b, parts.parameters.linear_solver.relative_tolerance);
+      tangent, x, b, parts.linear_solver_parameters.relative_tolerance);
     homogeneous_constraints.distribute(x);
     return iterations;
   }

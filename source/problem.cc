@@ -34,13 +34,16 @@ namespace hyperelastic
       , timer(pcout,
               print ? TimerOutput::summary : TimerOutput::never,
               TimerOutput::wall_times)
-      , formulation(create_formulation<dim>(parameters))
+      , formulation(create_formulation<dim>({parameters.problem,
+                                             parameters.material,
+                                             parameters.linear_solver,
+                                             parameters.time_integration}))
       , triangulation(
-          Utilities::MPI::n_mpi_processes(comm) == 1 ?
-            std::unique_ptr<Triangulation<dim>>(
-              std::make_unique<SerialTriangulation<dim>>(comm)) :
-            std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
-              comm))
+          Utilities::MPI::n_mpi_processes(comm) == 1
+            ? std::unique_ptr<Triangulation<dim>>(
+                std::make_unique<SerialTriangulation<dim>>(comm))
+            : std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
+                comm))
       , fe(formulation->finite_element())
       , mapping(FE_SimplexP<dim>(1))
       , dof_handler(*triangulation)
@@ -133,7 +136,9 @@ namespace hyperelastic
                                                parameters.output,
                                                pressure_dofs);
     system = std::make_unique<EquilibriumSystem<dim>>(
-      typename EquilibriumSystem<dim>::Parts{parameters,
+      typename EquilibriumSystem<dim>::Parts{parameters.newton,
+                                             parameters.linear_solver,
+                                             parameters.material.model,
                                              dof_handler,
                                              mapping,
                                              *material,
@@ -157,13 +162,18 @@ namespace hyperelastic
                               pressure_dofs.n_elements() > 0,
                               timer},
                              *elasticity);
-    stepping = create_time_stepping<dim>({parameters,
-                                          dof_handler,
-                                          mapping,
-                                          *material,
-                                          *elasticity,
-                                          system->free_dofs(),
-                                          timer});
+    stepping = create_time_stepping<dim>(
+      {parameters.time_integration,
+       parameters.load_stepping,
+       parameters.loading,
+       parameters.contact,
+       parameters.material.viscoelasticity.quasi_static_duration,
+       dof_handler,
+       mapping,
+       *material,
+       *elasticity,
+       system->free_dofs(),
+       timer});
     reporters = {stepping.get(), postprocessor.get()};
     if (contact_reporter)
       reporters.push_back(contact_reporter.get());

@@ -19,9 +19,12 @@
 #include <hyperelastic/formulation/formulation.h>
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/materials/material.h>
-#include <hyperelastic/parameters.h>
 #include <hyperelastic/solvers/linear_solver.h>
+#include <hyperelastic/solvers/linear_solver_parameters.h>
 #include <hyperelastic/solvers/load_stepping.h>
+#include <hyperelastic/solvers/newton_parameters.h>
+
+#include <string>
 
 namespace hyperelastic
 {
@@ -32,7 +35,12 @@ namespace hyperelastic
     /// The parts the system works on, owned by Problem (they outlive it).
     struct Parts
     {
-      const Parameters              &parameters;
+      /// Newton's tolerances and its policy on inverted cells ('Newton').
+      const NewtonParameters &newton;
+      /// The linear solves' relative tolerance ('Linear solver').
+      const LinearSolverParameters &linear_solver_parameters;
+      /// 'Material/Model', named in the verdict on inverted cells.
+      const std::string             &material_model;
       const dealii::DoFHandler<dim> &dof_handler;
       const dealii::Mapping<dim>    &mapping;
       const Material<dim>           &material;

@@ -264,11 +264,20 @@ namespace hyperelastic
           }
       }
 
-    if (element != MixedElement::stabilized)
-      return;
+    if (element == MixedElement::stabilized)
+      add_stabilization(data, p_q, p_mean / volume, volume, with_matrix);
+  }
+
+  template <int dim>
+  void
+  MixedAssembler<dim>::add_stabilization(CellData                  &data,
+                                         const std::vector<double> &p_q,
+                                         const double               p_mean,
+                                         const double               volume,
+                                         const bool with_matrix) const
+  {
     // -1/(2 mu) int (p - pbar)^2: residual -1/mu int (p - pbar) q, matrix
     // -1/mu (int psi_i psi_j - |T| psibar_i psibar_j).
-    p_mean /= volume;
     std::vector<double> psi_mean(data.n, 0.);
     for (unsigned int q = 0; q < quadrature.size(); ++q)
       {

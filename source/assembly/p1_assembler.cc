@@ -286,17 +286,9 @@ namespace hyperelastic
 
   template <int dim>
   bool
-  P1Assembler<dim>::system(const VectorType                &u,
-                           const AffineConstraints<double> &constraints,
-                           const TangentProjection          project_tangent,
-                           MatrixType                      &matrix,
-                           VectorType                      &rhs) const
+  P1Assembler<dim>::gather_prescribed_values(
+    const AffineConstraints<double> &constraints) const
   {
-    if (&matrix.trilinos_matrix() != block_matrix)
-      {
-        block_matrix = &matrix.trilinos_matrix();
-        block_ok     = find_block_positions(matrix);
-      }
     // The prescribed value of every ghosted dof (NaN where free). The owner
     // of a dof knows whether it is constrained (every cell around it is
     // owned or ghost there); a ghost cell's far nodes may lie on a boundary
@@ -314,7 +306,87 @@ namespace hyperelastic
     if (Utilities::MPI::min(block_ok && dirichlet_only ? 1 : 0,
                             dof_handler.get_communicator()) == 0)
       return false;
-    prescribed_ghosted       = prescribed_owned;
+    prescribed_ghosted = prescribed_owned;
+    return true;
+  }
+
+  template <int dim>
+  void
+  P1Assembler<dim>::add_cell_rows(const unsigned int    ci,
+                                  const Tensor<2, dim> &P,
+                                  const ElementMatrix  &K,
+                                  const double         *prescribed,
+                                  const int            *offsets,
+                                  double               *values,
+                                  double               *b) const
+  {
+    const Cell &c                  = cells[ci];
+    bool        touches_constraint = false;
+    for (unsigned int n = 0; n < n_nodes; ++n)
+      for (unsigned int i = 0; i < dim; ++i)
+        touches_constraint =
+          touches_constraint || !std::isnan(prescribed[c.node[n] + i]);
+
+    for (unsigned int a = 0; a < n_nodes; ++a)
+      if (c.row[a] >= 0)
+        {
+          const Tensor<1, dim> force = c.volume * (P * c.grad[a]);
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              const int     r   = c.row[a] + i;
+              double *const row = values + offsets[r];
+              if (!touches_constraint)
+                {
+                  // The common case: plain adds.
+                  b[r] -= force[i];
+                  for (unsigned int n = 0; n < n_nodes; ++n)
+                    {
+                      double *const block =
+                        row + block_position[ci][a * n_nodes + n];
+                      for (unsigned int k = 0; k < dim; ++k)
+                        block[k] += K[a][n][i][k];
+                    }
+                  continue;
+                }
+              if (!std::isnan(prescribed[c.node[a] + i]))
+                {
+                  // A constrained row keeps only a diagonal.
+                  constrained_diagonal[r] += std::abs(K[a][a][i][i]);
+                  continue;
+                }
+              b[r] -= force[i];
+              for (unsigned int n = 0; n < n_nodes; ++n)
+                {
+                  double *const block =
+                    row + block_position[ci][a * n_nodes + n];
+                  for (unsigned int k = 0; k < dim; ++k)
+                    {
+                      const double g = prescribed[c.node[n] + k];
+                      if (std::isnan(g))
+                        block[k] += K[a][n][i][k];
+                      else
+                        b[r] -= K[a][n][i][k] * g; // column to the rhs
+                    }
+                }
+            }
+        }
+  }
+
+  template <int dim>
+  bool
+  P1Assembler<dim>::system(const VectorType                &u,
+                           const AffineConstraints<double> &constraints,
+                           const TangentProjection          project_tangent,
+                           MatrixType                      &matrix,
+                           VectorType                      &rhs) const
+  {
+    if (&matrix.trilinos_matrix() != block_matrix)
+      {
+        block_matrix = &matrix.trilinos_matrix();
+        block_ok     = find_block_positions(matrix);
+      }
+    if (!gather_prescribed_values(constraints))
+      return false;
     const double *prescribed = ghosted_values(prescribed_ghosted);
 
     const double *U = ghosted_values(u);
@@ -359,55 +431,7 @@ namespace hyperelastic
           }
 
         element_matrix(c, A, K);
-        bool touches_constraint = false;
-        for (unsigned int n = 0; n < n_nodes; ++n)
-          for (unsigned int i = 0; i < dim; ++i)
-            touches_constraint =
-              touches_constraint || !std::isnan(prescribed[c.node[n] + i]);
-
-        for (unsigned int a = 0; a < n_nodes; ++a)
-          if (c.row[a] >= 0)
-            {
-              const Tensor<1, dim> force = c.volume * (P * c.grad[a]);
-              for (unsigned int i = 0; i < dim; ++i)
-                {
-                  const int     r   = c.row[a] + i;
-                  double *const row = values + offsets[r];
-                  if (!touches_constraint)
-                    {
-                      // The common case: plain adds.
-                      b[r] -= force[i];
-                      for (unsigned int n = 0; n < n_nodes; ++n)
-                        {
-                          double *const block =
-                            row + block_position[ci][a * n_nodes + n];
-                          for (unsigned int k = 0; k < dim; ++k)
-                            block[k] += K[a][n][i][k];
-                        }
-                      continue;
-                    }
-                  if (!std::isnan(prescribed[c.node[a] + i]))
-                    {
-                      // A constrained row keeps only a diagonal.
-                      constrained_diagonal[r] += std::abs(K[a][a][i][i]);
-                      continue;
-                    }
-                  b[r] -= force[i];
-                  for (unsigned int n = 0; n < n_nodes; ++n)
-                    {
-                      double *const block =
-                        row + block_position[ci][a * n_nodes + n];
-                      for (unsigned int k = 0; k < dim; ++k)
-                        {
-                          const double g = prescribed[c.node[n] + k];
-                          if (std::isnan(g))
-                            block[k] += K[a][n][i][k];
-                          else
-                            b[r] -= K[a][n][i][k] * g; // column to the rhs
-                        }
-                    }
-                }
-            }
+        add_cell_rows(ci, P, K, prescribed, offsets, values, b);
       }
     report(error, bad_cell);
 

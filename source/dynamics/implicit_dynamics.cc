@@ -12,7 +12,7 @@ namespace hyperelastic
   template <int dim>
   ImplicitDynamics<dim>::ImplicitDynamics(const SteppingContext<dim> &context)
       : context(context)
-      , parameters(context.parameters.time_integration)
+      , parameters(context.time_integration)
   {
   }
 
@@ -20,7 +20,7 @@ namespace hyperelastic
   LoadStepper
   ImplicitDynamics<dim>::stepper(dealii::ConditionalOStream pcout) const
   {
-    return LoadStepper(context.parameters.load_stepping,
+    return LoadStepper(context.load_stepping,
                        parameters.end_time,
                        parameters.time_step,
                        pcout);
@@ -61,7 +61,7 @@ namespace hyperelastic
       {
         const auto v0 =
           parse_vector_function<dim>(parameters.initial_velocity,
-                                     context.parameters.loading.constants,
+                                     context.loading.constants,
                                      "Time integration/Initial velocity");
         v0->set_time(0.);
         dealii::VectorTools::interpolate(context.mapping,
@@ -82,7 +82,7 @@ namespace hyperelastic
         VectorType internal(owned, comm);
         context.elasticity.assemble_forces(u, 0., internal, scratch);
         scratch -= internal;
-        if (context.parameters.contact.active())
+        if (context.contact.active())
           {
             context.elasticity.end_state_forces(u, 0., internal);
             scratch -= internal;
@@ -116,7 +116,7 @@ namespace hyperelastic
     // stay on its side.
     // A guess outside the model's domain (a cell inverted by a violent
     // extrapolation) is not taken either.
-    if (!context.parameters.contact.active() && c > 0.)
+    if (!context.contact.active() && c > 0.)
       {
         u = scratch;
         u.add(1. / c, acceleration);
@@ -167,8 +167,7 @@ namespace hyperelastic
                             u,
                             new_velocity,
                             new_acceleration);
-    if (integrator->end_force_weight() != 1. &&
-        context.parameters.contact.active())
+    if (integrator->end_force_weight() != 1. && context.contact.active())
       {
         // Newmark: the acceleration kept is that of the forces other than
         // contact, which took the step's whole impulse (time_integrator.h).

@@ -16,8 +16,8 @@ namespace hyperelastic
   LoadStepper
   QuasiStatic<dim>::stepper(dealii::ConditionalOStream pcout) const
   {
-    return LoadStepper(context.parameters.load_stepping,
-                       context.parameters.loading.n_load_steps,
+    return LoadStepper(context.load_stepping,
+                       context.loading.n_load_steps,
                        pcout);
   }
 
@@ -29,14 +29,13 @@ namespace hyperelastic
                                VectorType           &u,
                                VectorType           &u_ghosted)
   {
-    if (context.parameters.load_stepping.secant_predictor && previous.valid &&
+    if (context.load_stepping.secant_predictor && previous.valid &&
         !context.material.is_linear())
       predict(t, converged, previous, u, u_ghosted);
     // A model with history (viscoelasticity): the step lasts its increment
     // times the scene's quasi-static duration.
-    context.elasticity.begin_material_step(
-      (t - converged.load_factor) *
-      context.parameters.material.viscoelasticity.quasi_static_duration);
+    context.elasticity.begin_material_step((t - converged.load_factor) *
+                                           context.quasi_static_duration);
     return t;
   }
 

@@ -132,4 +132,13 @@ namespace hyperelastic
              "must be at least one time step (" + std::to_string(time_step) +
                ")");
   }
+
+  void
+  TimeIntegrationParameters::check_dimension(const unsigned int dim) const
+  {
+    if (!initial_velocity.empty() && initial_velocity.size() != dim)
+      reject("Time integration/Initial velocity",
+             std::to_string(initial_velocity.size()) + " expressions",
+             "needs " + std::to_string(dim) + " expressions");
+  }
 } // namespace hyperelastic

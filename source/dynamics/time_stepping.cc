@@ -9,7 +9,7 @@ namespace hyperelastic
   std::unique_ptr<TimeStepping<dim>>
   create_time_stepping(const SteppingContext<dim> &context)
   {
-    if (context.parameters.time_integration.dynamic())
+    if (context.time_integration.dynamic())
       return std::make_unique<ImplicitDynamics<dim>>(context);
     return std::make_unique<QuasiStatic<dim>>(context);
   }

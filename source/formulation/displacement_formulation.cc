@@ -4,8 +4,10 @@
 
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/formulation/displacement_formulation.h>
-#include <hyperelastic/formulation/formulation_registry.h>
+#include <hyperelastic/formulation/formulation_parameters.h>
+#include <hyperelastic/materials/material_parameters.h>
 #include <hyperelastic/solvers/linear_solver.h>
+#include <hyperelastic/solvers/linear_solver_parameters.h>
 #include <hyperelastic/solvers/two_level_preconditioner.h>
 
 #include <sstream>
@@ -14,11 +16,11 @@ namespace hyperelastic
 {
   template <int dim>
   DisplacementFormulation<dim>::DisplacementFormulation(
-    const Parameters &parameters)
-      : degree(parameters.problem.fe_degree)
-      , two_level(parameters.problem.fe_degree == 2 &&
-                  parameters.linear_solver.type == LinearSolverType::cg_amg &&
-                  parameters.linear_solver.p2_two_level)
+    const FormulationInputs &inputs)
+      : degree(inputs.problem.fe_degree)
+      , two_level(inputs.problem.fe_degree == 2 &&
+                  inputs.linear_solver.type == LinearSolverType::cg_amg &&
+                  inputs.linear_solver.p2_two_level)
   {
   }
 
@@ -72,10 +74,10 @@ namespace hyperelastic
 
   template <int dim>
   void
-  DisplacementFormulation<dim>::check(Parameters &parameters)
+  DisplacementFormulation<dim>::check(const FormulationInputs &inputs)
   {
     // Exact incompressibility needs the pressure as an unknown.
-    const MaterialParameters &material = parameters.material;
+    const MaterialParameters &material = inputs.material;
     if (!material.incompressible_entry.empty())
       reject(material.incompressible_entry,
              material.incompressible_value,

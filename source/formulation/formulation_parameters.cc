@@ -3,6 +3,7 @@
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/formulation/formulation_parameters.h>
 #include <hyperelastic/formulation/formulation_registry.h>
+#include <hyperelastic/materials/material_parameters.h>
 
 namespace hyperelastic
 {
@@ -67,4 +68,23 @@ namespace hyperelastic
     prm.leave_subsection();
   }
 
+  void
+  resolve_formulation(ProblemParameters        &problem,
+                      const MaterialParameters &material)
+  {
+    // 'Material/Model = stiffness warping' is an alias of the stiffness
+    // warping formulation with the corotational model.
+    if (material.stiffness_warping)
+      {
+        if (problem.formulation == "mixed")
+          reject("Problem/Formulation",
+                 "mixed",
+                 "'Material/Model = stiffness warping' works with the "
+                 "displacement formulation only");
+        problem.formulation = "stiffness warping";
+      }
+    const FormulationKind &kind = formulation_kind(problem.formulation);
+    if (kind.displacement_degree)
+      problem.fe_degree = kind.displacement_degree(problem);
+  }
 } // namespace hyperelastic

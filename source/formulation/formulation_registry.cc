@@ -1,6 +1,6 @@
 // The registered formulations, one line each.
+#include <hyperelastic/formulation/formulation_parameters.h>
 #include <hyperelastic/formulation/formulation_registry.h>
-#include <hyperelastic/parameters.h>
 
 #include <stdexcept>
 
@@ -45,17 +45,15 @@ namespace hyperelastic
 
   template <>
   std::unique_ptr<Formulation<2>>
-  create_formulation<2>(const Parameters &parameters)
+  create_formulation<2>(const FormulationInputs &inputs)
   {
-    return formulation_kind(parameters.problem.formulation)
-      .create_2d(parameters);
+    return formulation_kind(inputs.problem.formulation).create_2d(inputs);
   }
 
   template <>
   std::unique_ptr<Formulation<3>>
-  create_formulation<3>(const Parameters &parameters)
+  create_formulation<3>(const FormulationInputs &inputs)
   {
-    return formulation_kind(parameters.problem.formulation)
-      .create_3d(parameters);
+    return formulation_kind(inputs.problem.formulation).create_3d(inputs);
   }
 } // namespace hyperelastic

@@ -8,8 +8,11 @@
 
 #include <hyperelastic/assembly/mixed_assembler.h>
 #include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/dynamics/time_integration_parameters.h>
+#include <hyperelastic/formulation/formulation_parameters.h>
 #include <hyperelastic/formulation/formulation_registry.h>
-#include <hyperelastic/parameters.h>
+#include <hyperelastic/materials/material_parameters.h>
+#include <hyperelastic/solvers/linear_solver_parameters.h>
 
 namespace hyperelastic
 {
@@ -21,9 +24,9 @@ namespace hyperelastic
     class MixedFormulation : public Formulation<dim>
     {
     public:
-      explicit MixedFormulation(const Parameters &parameters)
-          : element(parameters.problem.mixed_element)
-          , block_preconditioner(parameters.linear_solver.type ==
+      explicit MixedFormulation(const FormulationInputs &inputs)
+          : element(inputs.problem.mixed_element)
+          , block_preconditioner(inputs.linear_solver.type ==
                                  LinearSolverType::cg_amg)
       {
       }
@@ -146,15 +149,15 @@ namespace hyperelastic
     };
 
     void
-    check_mixed(Parameters &parameters)
+    check_mixed(const FormulationInputs &inputs)
     {
-      if (parameters.time_integration.dynamic())
+      if (inputs.time_integration.dynamic())
         reject("Time integration/Scheme",
-               parameters.time_integration.scheme_name(),
+               inputs.time_integration.scheme_name(),
                "implicit dynamics is not available with 'Problem/Formulation "
                "= mixed' yet");
       // The mixed formulation needs the model's volumetric split.
-      const MaterialParameters &material = parameters.material;
+      const MaterialParameters &material = inputs.material;
       if (!material_model(material.registered_model()).has_volumetric_split)
         {
           std::string with_split;
@@ -168,8 +171,6 @@ namespace hyperelastic
                    "psi_iso(F) + U(J); use a model with one (" +
                    with_split + ") or 'Formulation = displacement'");
         }
-      parameters.problem.fe_degree =
-        displacement_degree(parameters.problem.mixed_element);
     }
   } // namespace
 
@@ -185,6 +186,9 @@ namespace hyperelastic
       "where P1 locks and AMG stalls. Needs a model with a split (decoupled "
       "neo-Hookean, Mooney-Rivlin); the element is then 'Mixed element', and "
       "'Finite element degree' is ignored.",
-      &check_mixed);
+      &check_mixed,
+      [](const ProblemParameters &problem) {
+        return displacement_degree(problem.mixed_element);
+      });
   }
 } // namespace hyperelastic

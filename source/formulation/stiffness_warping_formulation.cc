@@ -5,7 +5,9 @@
 #include <hyperelastic/assembly/warped_assembler.h>
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/formulation/displacement_formulation.h>
+#include <hyperelastic/formulation/formulation_parameters.h>
 #include <hyperelastic/formulation/formulation_registry.h>
+#include <hyperelastic/materials/material_parameters.h>
 
 namespace hyperelastic
 {
@@ -15,14 +17,14 @@ namespace hyperelastic
     class StiffnessWarpingFormulation : public DisplacementFormulation<dim>
     {
     public:
-      explicit StiffnessWarpingFormulation(const Parameters &parameters)
-          : DisplacementFormulation<dim>(parameters)
-          , note(std::string(parameters.material.stiffness_warping
+      explicit StiffnessWarpingFormulation(const FormulationInputs &inputs)
+          : DisplacementFormulation<dim>(inputs)
+          , note(std::string(inputs.material.stiffness_warping
                                ? ""
                                : ", stiffness warping") +
                  " of the linear elastic stiffness (no potential; energy "
                  "and cell stresses: " +
-                 parameters.material.registered_model() + ")")
+                 inputs.material.registered_model() + ")")
       {
       }
 
@@ -59,13 +61,13 @@ namespace hyperelastic
     };
 
     void
-    check_stiffness_warping(Parameters &parameters)
+    check_stiffness_warping(const FormulationInputs &inputs)
     {
-      DisplacementFormulation<3>::check(parameters);
+      DisplacementFormulation<3>::check(inputs);
       // One rotation per vertex: P1 nodes only.
-      if (parameters.problem.fe_degree != 1)
+      if (inputs.problem.fe_degree != 1)
         reject("Problem/Finite element degree",
-               std::to_string(parameters.problem.fe_degree),
+               std::to_string(inputs.problem.fe_degree),
                "'Material/Model = stiffness warping' needs P1 elements (one "
                "rotation per vertex)");
     }

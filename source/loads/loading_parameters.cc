@@ -15,6 +15,52 @@ namespace hyperelastic
 {
   using namespace entry_patterns;
 
+  namespace
+  {
+    /// 'Loading/Constants' (@p constants_text): 'name = number' pairs
+    /// separated by ',', each name an identifier other than x, y, z, t and
+    /// pi.
+    void
+    parse_constants(const std::string             &constants_text,
+                    std::map<std::string, double> &constants)
+    {
+      for (const auto &pair :
+           dealii::Utilities::split_string_list(constants_text, ','))
+        {
+          const auto        eq = pair.find('=');
+          const std::string name =
+            eq == std::string::npos
+              ? ""
+              : dealii::Utilities::trim(pair.substr(0, eq));
+          double             value = 0;
+          std::istringstream value_stream(
+            eq == std::string::npos ? "" : pair.substr(eq + 1));
+          value_stream >> value;
+          if (name.empty() || value_stream.fail() || !std::isfinite(value) ||
+              !(value_stream >> std::ws).eof())
+            reject("Loading/Constants",
+                   constants_text,
+                   "expected 'name = number' pairs separated by ',', got '" +
+                     pair + "'");
+          const bool identifier =
+            (std::isalpha(static_cast<unsigned char>(name[0])) ||
+             name[0] == '_') &&
+            std::all_of(name.begin(), name.end(), [](const char c) {
+              return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+            });
+          if (!identifier || name == "x" || name == "y" || name == "z" ||
+              name == "t" || name == "pi")
+            reject("Loading/Constants",
+                   constants_text,
+                   "'" + name +
+                     "' cannot be a constant's name: use letters, digits and "
+                     "'_' (starting with a letter), other than x, y, z, t and "
+                     "pi");
+          constants[name] = value;
+        }
+    }
+  } // namespace
+
   void
   LoadingParameters::declare(ParameterHandler &prm)
   {
@@ -113,39 +159,7 @@ namespace hyperelastic
     const std::string constants_text = prm.get("Constants");
     prm.leave_subsection();
 
-    for (const auto &pair :
-         dealii::Utilities::split_string_list(constants_text, ','))
-      {
-        const auto        eq = pair.find('=');
-        const std::string name =
-          eq == std::string::npos ? ""
-                                  : dealii::Utilities::trim(pair.substr(0, eq));
-        double             value = 0;
-        std::istringstream value_stream(
-          eq == std::string::npos ? "" : pair.substr(eq + 1));
-        value_stream >> value;
-        if (name.empty() || value_stream.fail() || !std::isfinite(value) ||
-            !(value_stream >> std::ws).eof())
-          reject("Loading/Constants",
-                 constants_text,
-                 "expected 'name = number' pairs separated by ',', got '" +
-                   pair + "'");
-        const bool identifier =
-          (std::isalpha(static_cast<unsigned char>(name[0])) ||
-           name[0] == '_') &&
-          std::all_of(name.begin(), name.end(), [](const char c) {
-            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-          });
-        if (!identifier || name == "x" || name == "y" || name == "z" ||
-            name == "t" || name == "pi")
-          reject("Loading/Constants",
-                 constants_text,
-                 "'" + name +
-                   "' cannot be a constant's name: use letters, digits and "
-                   "'_' (starting with a letter), other than x, y, z, t and "
-                   "pi");
-        constants[name] = value;
-      }
+    parse_constants(constants_text, constants);
 
     for (unsigned int i = 1; i <= max_dirichlet; ++i)
       {
@@ -225,5 +239,71 @@ namespace hyperelastic
           }
         prm.leave_subsection();
       }
+  }
+
+  void
+  LoadingParameters::check_dimension(const unsigned int dim) const
+  {
+    const auto size = [](const auto &v) { return std::to_string(v.size()); };
+    if (!body_force.empty() && body_force.size() != dim)
+      reject("Loading/Body force",
+             size(body_force) + " expressions",
+             "needs " + std::to_string(dim) + " expressions separated by ';'");
+    for (const auto &c : dirichlet)
+      {
+        for (const unsigned int component : c.components)
+          if (component >= dim)
+            reject(c.subsection + "/Components",
+                   "z",
+                   "there is no z component in 2D");
+        if (!c.vertex.empty() && c.vertex.size() != dim)
+          reject(c.subsection + "/Vertex",
+                 size(c.vertex) + " coordinates",
+                 "needs " + std::to_string(dim));
+      }
+    for (const auto &p : point_loads)
+      {
+        if (p.point.size() != dim)
+          reject(p.subsection + "/Point",
+                 size(p.point) + " coordinates",
+                 "needs " + std::to_string(dim));
+        if (p.expressions.size() != dim)
+          reject(p.subsection + "/Force",
+                 size(p.expressions) + " expressions",
+                 "needs " + std::to_string(dim) +
+                   " expressions separated by ';'");
+      }
+    for (const auto &c : boundary_loads)
+      {
+        const bool vector_valued = boundary_load_kind(c.kind).vector_valued;
+        if (vector_valued && c.expressions.size() != dim)
+          reject(c.subsection + "/" + c.kind,
+                 size(c.expressions) + " expressions",
+                 "needs " + std::to_string(dim) +
+                   " expressions separated by ';'");
+        if (!vector_valued && c.expressions.size() != 1)
+          reject(c.subsection + "/" + c.kind,
+                 size(c.expressions) + " expressions",
+                 "needs one expression");
+      }
+  }
+
+  void
+  LoadingParameters::check_dirichlet_conflicts() const
+  {
+    // Two conditions on the same id and component contradict each other.
+    for (unsigned int a = 0; a < dirichlet.size(); ++a)
+      for (unsigned int b = a + 1; b < dirichlet.size(); ++b)
+        if (dirichlet[a].boundary_id == dirichlet[b].boundary_id)
+          for (const unsigned int ca : dirichlet[a].components)
+            for (const unsigned int cb : dirichlet[b].components)
+              if (ca == cb &&
+                  (dirichlet[a].vertex.empty() || dirichlet[b].vertex.empty() ||
+                   dirichlet[a].vertex == dirichlet[b].vertex))
+                reject(dirichlet[b].subsection + "/Boundary id",
+                       std::to_string(dirichlet[b].boundary_id),
+                       "component " + std::string(1, "xyz"[ca]) +
+                         " of this boundary id is already prescribed in " +
+                         dirichlet[a].subsection);
   }
 } // namespace hyperelastic

@@ -4,8 +4,10 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/dynamics/time_integration_parameters.h>
 #include <hyperelastic/materials/material_parameters.h>
 #include <hyperelastic/materials/viscoelasticity.h>
+#include <hyperelastic/solvers/load_stepping_parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -203,7 +205,7 @@ namespace hyperelastic
                  prm.get("Young's modulus"),
                  "must be positive");
         // nu = 0.5 (lambda = infinity) only with the mixed formulation:
-        // Parameters checks that, knowing the formulation.
+        // the displacement formulation rejects it (its scene check).
         if (!(nu > -1. && nu <= 0.5))
           reject("Material/Poisson's ratio",
                  prm.get("Poisson's ratio"),
@@ -270,5 +272,33 @@ namespace hyperelastic
       reject(section + "Quasi-static duration",
              prm.get("Quasi-static duration"),
              "must be positive and finite");
+  }
+
+  void
+  check_viscoelasticity(const MaterialParameters        &material,
+                        const LoadSteppingParameters    &load_stepping,
+                        const TimeIntegrationParameters &time_integration)
+  {
+    // Viscoelasticity: the history is written at the solved state of a
+    // step of known length.
+    if (!material.viscoelasticity.active())
+      return;
+    const auto viscous = [&](const std::string &entry,
+                             const std::string &value,
+                             const std::string &why) {
+      reject(entry,
+             value,
+             "'Material/Viscoelasticity' (Weights = '" +
+               material.viscoelasticity.weights_text + "') " + why);
+    };
+    if (load_stepping.method == LoadControl::arc_length)
+      viscous("Load stepping/Method",
+              "arc length",
+              "needs steps of known length (load control)");
+    if (time_integration.scheme_name() == "implicit midpoint")
+      viscous("Time integration/Scheme",
+              "implicit midpoint",
+              "needs a scheme that solves at the end of the step "
+              "(backward Euler or Newmark)");
   }
 } // namespace hyperelastic

@@ -45,6 +45,59 @@ namespace hyperelastic
           parent[std::max(ra, rb)] = std::min(ra, rb);
       }
     };
+
+    /// The bodies from the components of every rank: rank r's are
+    /// @p all_info[r] (volume tag, held, box per component), numbered from
+    /// @p offset[r] on in @p global, which joined those of one body. In an
+    /// order that does not depend on the partition.
+    template <int dim>
+    std::vector<Body<dim>>
+    merge_components(const std::vector<std::vector<double>> &all_info,
+                     const std::vector<unsigned int>        &offset,
+                     Components                             &global)
+    {
+      // Merge the components of each body.
+      std::map<unsigned int, Body<dim>> merged;
+      for (unsigned int r = 0; r < all_info.size(); ++r)
+        for (unsigned int k = 0; offset[r] + k < offset[r + 1]; ++k)
+          {
+            const double *c = &all_info[r][k * (2 + 2 * dim)];
+            Point<dim>    lower, upper;
+            for (unsigned int d = 0; d < dim; ++d)
+              lower[d] = c[2 + d], upper[d] = c[2 + dim + d];
+            const BoundingBox<dim> box(std::make_pair(lower, upper));
+            auto [it, fresh] =
+              merged.emplace(global.root(offset[r] + k), Body<dim>());
+            Body<dim> &b = it->second;
+            if (fresh)
+              {
+                b.volume_tag = static_cast<types::material_id>(c[0]);
+                b.box        = box;
+              }
+            else
+              {
+                b.volume_tag = std::min<types::material_id>(b.volume_tag, c[0]);
+                b.box.merge_with(box);
+              }
+            b.held = b.held || c[1] > 0.;
+          }
+      // In an order that does not depend on the partition: by volume tag,
+      // then by the boxes' lower corners.
+      std::vector<Body<dim>> bodies;
+      for (const auto &[root, body] : merged)
+        bodies.push_back(body);
+      const auto key = [](const Body<dim> &b) {
+        std::array<double, dim + 1> k;
+        k[0] = b.volume_tag;
+        for (unsigned int d = 0; d < dim; ++d)
+          k[d + 1] = b.box.get_boundary_points().first[d];
+        return k;
+      };
+      std::sort(bodies.begin(),
+                bodies.end(),
+                [&](const auto &a, const auto &b) { return key(a) < key(b); });
+      return bodies;
+    }
   } // namespace
 
   template <int dim>
@@ -145,47 +198,7 @@ namespace hyperelastic
             global.join(it->second, c);
         }
 
-    // Merge the components of each body.
-    std::map<unsigned int, Body<dim>> merged;
-    for (unsigned int r = 0; r < all_info.size(); ++r)
-      for (unsigned int k = 0; offset[r] + k < offset[r + 1]; ++k)
-        {
-          const double *c = &all_info[r][k * (2 + 2 * dim)];
-          Point<dim>    lower, upper;
-          for (unsigned int d = 0; d < dim; ++d)
-            lower[d] = c[2 + d], upper[d] = c[2 + dim + d];
-          const BoundingBox<dim> box(std::make_pair(lower, upper));
-          auto [it, fresh] =
-            merged.emplace(global.root(offset[r] + k), Body<dim>());
-          Body<dim> &b = it->second;
-          if (fresh)
-            {
-              b.volume_tag = static_cast<types::material_id>(c[0]);
-              b.box        = box;
-            }
-          else
-            {
-              b.volume_tag = std::min<types::material_id>(b.volume_tag, c[0]);
-              b.box.merge_with(box);
-            }
-          b.held = b.held || c[1] > 0.;
-        }
-    // In an order that does not depend on the partition: by volume tag,
-    // then by the boxes' lower corners.
-    std::vector<Body<dim>> bodies;
-    for (const auto &[root, body] : merged)
-      bodies.push_back(body);
-    const auto key = [](const Body<dim> &b) {
-      std::array<double, dim + 1> k;
-      k[0] = b.volume_tag;
-      for (unsigned int d = 0; d < dim; ++d)
-        k[d + 1] = b.box.get_boundary_points().first[d];
-      return k;
-    };
-    std::sort(bodies.begin(), bodies.end(), [&](const auto &a, const auto &b) {
-      return key(a) < key(b);
-    });
-    return bodies;
+    return merge_components<dim>(all_info, offset, global);
   }
 
   template <int dim>

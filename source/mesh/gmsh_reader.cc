@@ -245,121 +245,271 @@ namespace hyperelastic
         throw InputError("cannot read mesh file '" + file_name + "'");
       return text;
     }
-  } // namespace
 
-  template <int dim>
-  GmshMesh<dim>
-  read_gmsh(const std::string &file_name,
-            const std::string &entry,
-            const bool         cells_required)
-  {
-    GmshText in(read_file(file_name, entry), file_name);
+    /// One pass over a gmsh file, section by section: each section's
+    /// reader adds to the mesh (or to what later sections need: the format
+    /// version, the entities' physical tags, the node index).
+    template <int dim>
+    class GmshParser
+    {
+    public:
+      GmshParser(const std::string &file_name, const std::string &entry)
+          : file_name(file_name)
+          , in(read_file(file_name, entry), file_name)
+      {
+      }
 
-    // gmsh element types: 2 is the 3-node triangle, 4 the 4-node tet.
-    const int     simplex_type = dim == 2 ? 2 : 4;
-    double        version      = 0.;
-    GmshMesh<dim> mesh;
-    // Per entity dimension: entity tag -> physical tag (format 4).
-    std::array<std::map<long long, int>, 4> physical_tags;
-    std::vector<Point<3>>                   nodes;
-    std::vector<long long>                  node_tags;
-    std::unique_ptr<NodeIndex>              node_index;
-    long long                               unsupported_tag  = 0;
-    long long                               n_unsupported    = 0;
-    int                                     unsupported_type = 0;
-
-    const auto vertex = [&](const long long element, const long long node) {
-      const unsigned int v =
-        node_index ? (*node_index)(node) : numbers::invalid_unsigned_int;
-      if (v == numbers::invalid_unsigned_int)
-        in.fail("element " + std::to_string(element) + " refers to node " +
-                std::to_string(node) + ", which $Nodes does not define");
-      return v;
-    };
-
-    const auto read_entities = [&]() {
-      std::array<long long, 4> n;
-      for (long long &count : n)
-        count = in.number<long long>();
-      in.skip_line();
-      for (unsigned int d = 0; d < 4; ++d)
-        for (long long i = 0; i < n[d]; ++i)
+      /// Reads every section; unknown ones are skipped.
+      void
+      read_sections()
+      {
+        while (in.more())
           {
-            // Points: tag x y z (4.0: a box of 6 numbers); curves, surfaces
-            // and volumes: tag and a box; then the physical tags, then the
-            // bounding entities (skipped).
-            const long long tag           = in.number<long long>();
-            const int       n_coordinates = (d == 0 && version >= 4.05) ? 3 : 6;
-            for (int k = 0; k < n_coordinates; ++k)
-              in.number<double>();
-            const long long n_physical = in.number<long long>();
-            if (n_physical > 1)
-              in.fail("entity " + std::to_string(tag) + " of dimension " +
-                      std::to_string(d) + " has " + std::to_string(n_physical) +
-                      " physical tags; one is read as the boundary id, "
-                      "more are not supported");
-            int physical = 0; // none: 0, as GridIn
-            if (n_physical == 1)
-              physical = in.number<int>();
-            physical_tags[d][tag] = physical;
-            in.skip_line();
+            const std::string_view section = in.word();
+            if (section == "$MeshFormat")
+              read_mesh_format();
+            else if (section == "$NOD" || section == "$Nodes")
+              {
+                if (section == "$NOD") // format 1 has no $MeshFormat
+                  version = 1.;
+                read_nodes();
+              }
+            else if (section == "$ELM" || section == "$Elements")
+              read_elements();
+            else if (section == "$Entities")
+              read_entities();
+            else if (section[0] == '$')
+              in.skip_section(section);
+            else
+              in.fail("unexpected '" + std::string(section) +
+                      "' outside a section");
           }
-      in.expect("$EndEntities");
-    };
+      }
 
-    const auto read_nodes = [&]() {
-      if (version == 0.)
-        in.fail("no $MeshFormat section before $Nodes");
-      long long n_blocks = 1, n_nodes = 0;
-      if (version >= 4.)
-        n_blocks = in.number<long long>();
-      n_nodes = in.number<long long>();
-      in.skip_line(); // format 4.1: smallest and largest tag
-      nodes.reserve(n_nodes);
-      node_tags.reserve(n_nodes);
-      const auto coordinates = [&]() {
+      /// The mesh read: InputError if it holds elements of other types, or
+      /// (if @p cells_required) no cells.
+      GmshMesh<dim>
+      finish(const bool cells_required)
+      {
+        check_element_types(cells_required);
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            mesh.lower[d] = std::numeric_limits<double>::infinity();
+            mesh.upper[d] = -std::numeric_limits<double>::infinity();
+          }
+        for (const CellData<dim> &cell : mesh.cells)
+          for (const unsigned int v : cell.vertices)
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                mesh.lower[d] = std::min(mesh.lower[d], nodes[v][d]);
+                mesh.upper[d] = std::max(mesh.upper[d], nodes[v][d]);
+              }
+        if constexpr (dim == 3)
+          mesh.vertices = std::move(nodes);
+        else
+          {
+            mesh.vertices.reserve(nodes.size());
+            for (const Point<3> &x : nodes)
+              mesh.vertices.emplace_back(x[0], x[1]);
+          }
+        return std::move(mesh);
+      }
+
+    private:
+      /// $MeshFormat: the version (ASCII files of formats 2 and 4 only).
+      void
+      read_mesh_format()
+      {
+        version             = in.number<double>();
+        const int file_type = in.number<int>();
+        // deal.II's reader never took binary files either; say so rather
+        // than fail on binary data.
+        if (file_type != 0)
+          throw InputError(
+            "mesh file '" + file_name +
+            "' is a binary gmsh file; save it as ASCII (gmsh "
+            "option -format msh41 without -bin, or Mesh.Binary = 0)");
+        if (!((version >= 2. && version < 3.) ||
+              (version >= 4. && version < 4.15)))
+          in.fail("gmsh format version " + std::to_string(version) +
+                  " is not supported (1, 2, 4.0 and 4.1 are)");
+        in.skip_line();
+        in.expect("$EndMeshFormat");
+      }
+
+      /// $Entities (format 4): the physical tag of every entity.
+      void
+      read_entities()
+      {
+        std::array<long long, 4> n;
+        for (long long &count : n)
+          count = in.number<long long>();
+        in.skip_line();
+        for (unsigned int d = 0; d < 4; ++d)
+          for (long long i = 0; i < n[d]; ++i)
+            {
+              // Points: tag x y z (4.0: a box of 6 numbers); curves,
+              // surfaces and volumes: tag and a box; then the physical tags,
+              // then the bounding entities (skipped).
+              const long long tag     = in.number<long long>();
+              const int n_coordinates = (d == 0 && version >= 4.05) ? 3 : 6;
+              for (int k = 0; k < n_coordinates; ++k)
+                in.number<double>();
+              const long long n_physical = in.number<long long>();
+              if (n_physical > 1)
+                in.fail("entity " + std::to_string(tag) + " of dimension " +
+                        std::to_string(d) + " has " +
+                        std::to_string(n_physical) +
+                        " physical tags; one is read as the boundary id, "
+                        "more are not supported");
+              int physical = 0; // none: 0, as GridIn
+              if (n_physical == 1)
+                physical = in.number<int>();
+              physical_tags[d][tag] = physical;
+              in.skip_line();
+            }
+        in.expect("$EndEntities");
+      }
+
+      /// $Nodes (or format 1's $NOD): the positions, and the index of the
+      /// node tags.
+      void
+      read_nodes()
+      {
+        if (version == 0.)
+          in.fail("no $MeshFormat section before $Nodes");
+        long long n_blocks = 1, n_nodes = 0;
+        if (version >= 4.)
+          n_blocks = in.number<long long>();
+        n_nodes = in.number<long long>();
+        in.skip_line(); // format 4.1: smallest and largest tag
+        nodes.reserve(n_nodes);
+        node_tags.reserve(n_nodes);
+        for (long long b = 0; b < n_blocks; ++b)
+          {
+            long long n = n_nodes;
+            if (version >= 4.)
+              {
+                // Entity tag and dimension (4.1: the other way round),
+                // "parametric", the node count.
+                in.number<long long>();
+                in.number<long long>();
+                in.number<long long>();
+                n = in.number<long long>();
+                in.skip_line();
+              }
+            if (version >= 4.05) // n tags, then n coordinate lines
+              {
+                for (long long i = 0; i < n; ++i)
+                  node_tags.push_back(in.number<long long>());
+                for (long long i = 0; i < n; ++i)
+                  read_coordinates();
+              }
+            else // "tag x y z" per line
+              for (long long i = 0; i < n; ++i)
+                {
+                  node_tags.push_back(in.number<long long>());
+                  read_coordinates();
+                }
+          }
+        in.expect(version < 2. ? "$ENDNOD" : "$EndNodes");
+        node_index = std::make_unique<NodeIndex>(node_tags);
+        node_tags.clear();
+        node_tags.shrink_to_fit();
+      }
+
+      /// One node's x y z, the rest of its line skipped.
+      void
+      read_coordinates()
+      {
         Point<3> x;
         for (unsigned int d = 0; d < 3; ++d)
           x[d] = in.number<double>();
         nodes.push_back(x);
         in.skip_line(); // parametric coordinates, if any
-      };
-      for (long long b = 0; b < n_blocks; ++b)
-        {
-          long long n = n_nodes;
-          if (version >= 4.)
-            {
-              // Entity tag and dimension (4.1: the other way round),
-              // "parametric", the node count.
-              in.number<long long>();
-              in.number<long long>();
-              in.number<long long>();
-              n = in.number<long long>();
-              in.skip_line();
-            }
-          if (version >= 4.05) // n tags, then n coordinate lines
-            {
-              for (long long i = 0; i < n; ++i)
-                node_tags.push_back(in.number<long long>());
-              for (long long i = 0; i < n; ++i)
-                coordinates();
-            }
-          else // "tag x y z" per line
+      }
+
+      /// $Elements (or format 1's $ELM): block by block (format 4) or one
+      /// element per line with its type and tags (formats 1 and 2).
+      void
+      read_elements()
+      {
+        long long n_blocks = 1, n_elements = 0;
+        if (version >= 4.)
+          n_blocks = in.number<long long>();
+        n_elements = in.number<long long>();
+        in.skip_line();
+        mesh.cells.reserve(n_elements);
+        mesh.element_numbers.reserve(n_elements);
+        for (long long b = 0; b < n_blocks; ++b)
+          {
+            long long n        = n_elements;
+            int       type     = 0;
+            int       physical = 0;
+            if (version >= 4.)
+              read_element_block_header(type, n, physical);
             for (long long i = 0; i < n; ++i)
               {
-                node_tags.push_back(in.number<long long>());
-                coordinates();
+                const long long tag = in.number<long long>();
+                if (version < 4.)
+                  read_element_tags(type, physical);
+                read_element(tag, type, physical);
               }
-        }
-      in.expect(version < 2. ? "$ENDNOD" : "$EndNodes");
-      node_index = std::make_unique<NodeIndex>(node_tags);
-      node_tags.clear();
-      node_tags.shrink_to_fit();
-    };
+          }
+        in.expect(version < 2. ? "$ENDELM" : "$EndElements");
+      }
 
-    // One element: its number, type and physical tag read, its nodes next.
-    const auto read_element =
-      [&](const long long tag, const int type, const int physical) {
+      /// Format 4: a block's element type, element count and the physical
+      /// tag of its entity.
+      void
+      read_element_block_header(int &type, long long &n, int &physical)
+      {
+        // 4.0: entity tag, entity dimension; 4.1: the other way round;
+        // then element type and count.
+        const long long a = in.number<long long>();
+        const long long c = in.number<long long>();
+        type              = in.number<int>();
+        n                 = in.number<long long>();
+        in.skip_line();
+        const long long entity_dim = version >= 4.05 ? a : c;
+        const long long entity_tag = version >= 4.05 ? c : a;
+        if (entity_dim < 0 || entity_dim > 3)
+          in.fail("element block of entity dimension " +
+                  std::to_string(entity_dim));
+        const auto found = physical_tags[entity_dim].find(entity_tag);
+        physical = found == physical_tags[entity_dim].end() ? 0 : found->second;
+      }
+
+      /// Formats 1 and 2: an element's type and physical tag, after its
+      /// number.
+      void
+      read_element_tags(int &type, int &physical)
+      {
+        type = in.number<int>();
+        if (version < 2.) // physical, elementary, node count
+          {
+            physical = in.number<int>();
+            in.number<long long>();
+            in.number<long long>();
+          }
+        else // tag count, tags (the first is the physical one)
+          {
+            const int n_tags = in.number<int>();
+            physical         = 0;
+            for (int t = 0; t < n_tags; ++t)
+              {
+                const int value = in.number<int>();
+                if (t == 0)
+                  physical = value;
+              }
+          }
+      }
+
+      /// One element: its number, type and physical tag read, its nodes
+      /// next.
+      void
+      read_element(const long long tag, const int type, const int physical)
+      {
         if (type == simplex_type)
           {
             CellData<dim> cell(dim + 1);
@@ -399,148 +549,75 @@ namespace hyperelastic
               }
           }
         in.skip_line();
-      };
+      }
 
-    const auto read_elements = [&]() {
-      long long n_blocks = 1, n_elements = 0;
-      if (version >= 4.)
-        n_blocks = in.number<long long>();
-      n_elements = in.number<long long>();
-      in.skip_line();
-      mesh.cells.reserve(n_elements);
-      mesh.element_numbers.reserve(n_elements);
-      for (long long b = 0; b < n_blocks; ++b)
-        {
-          long long n        = n_elements;
-          int       type     = 0;
-          int       physical = 0;
-          if (version >= 4.)
-            {
-              // 4.0: entity tag, entity dimension; 4.1: the other way
-              // round; then element type and count.
-              const long long a = in.number<long long>();
-              const long long c = in.number<long long>();
-              type              = in.number<int>();
-              n                 = in.number<long long>();
-              in.skip_line();
-              const long long entity_dim = version >= 4.05 ? a : c;
-              const long long entity_tag = version >= 4.05 ? c : a;
-              if (entity_dim < 0 || entity_dim > 3)
-                in.fail("element block of entity dimension " +
-                        std::to_string(entity_dim));
-              const auto found = physical_tags[entity_dim].find(entity_tag);
-              physical =
-                found == physical_tags[entity_dim].end() ? 0 : found->second;
-            }
-          for (long long i = 0; i < n; ++i)
-            {
-              const long long tag = in.number<long long>();
-              if (version < 4.)
-                {
-                  type = in.number<int>();
-                  if (version < 2.) // physical, elementary, node count
-                    {
-                      physical = in.number<int>();
-                      in.number<long long>();
-                      in.number<long long>();
-                    }
-                  else // tag count, tags (the first is the physical one)
-                    {
-                      const int n_tags = in.number<int>();
-                      physical         = 0;
-                      for (int t = 0; t < n_tags; ++t)
-                        {
-                          const int value = in.number<int>();
-                          if (t == 0)
-                            physical = value;
-                        }
-                    }
-                }
-              read_element(tag, type, physical);
-            }
-        }
-      in.expect(version < 2. ? "$ENDELM" : "$EndElements");
+      /// The position in the list of nodes of node @p node of element
+      /// @p element.
+      unsigned int
+      vertex(const long long element, const long long node)
+      {
+        const unsigned int v =
+          node_index ? (*node_index)(node) : numbers::invalid_unsigned_int;
+        if (v == numbers::invalid_unsigned_int)
+          in.fail("element " + std::to_string(element) + " refers to node " +
+                  std::to_string(node) + ", which $Nodes does not define");
+        return v;
+      }
+
+      /// Elements of types hyperelastic does not read, or no cells at all,
+      /// are InputErrors.
+      void
+      check_element_types(const bool cells_required) const
+      {
+        if (n_unsupported > 0)
+          throw InputError(
+            "mesh file '" + file_name + "': " + std::to_string(n_unsupported) +
+            " element(s) of a type hyperelastic does not read, the first gmsh "
+            "element " +
+            std::to_string(unsupported_tag) + ", a " +
+            gmsh_element_name(unsupported_type) + ". A " + std::to_string(dim) +
+            "D mesh consists of " +
+            (dim == 2 ? "3-node triangles (plus lines"
+                      : "4-node tetrahedra (plus triangles, lines") +
+            " and points for boundary ids): mesh with simplices, first order "
+            "(gmsh: no Recombine, Mesh.ElementOrder = 1), and check "
+            "'Problem/Dimension'");
+        if (mesh.cells.empty() && cells_required)
+          throw InputError(
+            "mesh file '" + file_name + "' holds no " +
+            (dim == 2 ? "3-node triangles" : "4-node tetrahedra") +
+            " (gmsh element type " + std::to_string(simplex_type) +
+            "), only lower-dimensional elements: mesh the " +
+            (dim == 2 ? "surface (gmsh -2)" : "volume (gmsh -3)"));
+      }
+
+      // gmsh element types: 2 is the 3-node triangle, 4 the 4-node tet.
+      static constexpr int simplex_type = dim == 2 ? 2 : 4;
+
+      const std::string &file_name;
+      GmshText           in;
+      double             version = 0.;
+      GmshMesh<dim>      mesh;
+      // Per entity dimension: entity tag -> physical tag (format 4).
+      std::array<std::map<long long, int>, 4> physical_tags;
+      std::vector<Point<3>>                   nodes;
+      std::vector<long long>                  node_tags;
+      std::unique_ptr<NodeIndex>              node_index;
+      long long                               unsupported_tag  = 0;
+      long long                               n_unsupported    = 0;
+      int                                     unsupported_type = 0;
     };
+  } // namespace
 
-    while (in.more())
-      {
-        const std::string_view section = in.word();
-        if (section == "$MeshFormat")
-          {
-            version             = in.number<double>();
-            const int file_type = in.number<int>();
-            // deal.II's reader never took binary files either; say so rather
-            // than fail on binary data.
-            if (file_type != 0)
-              throw InputError(
-                "mesh file '" + file_name +
-                "' is a binary gmsh file; save it as ASCII (gmsh "
-                "option -format msh41 without -bin, or Mesh.Binary = 0)");
-            if (!((version >= 2. && version < 3.) ||
-                  (version >= 4. && version < 4.15)))
-              in.fail("gmsh format version " + std::to_string(version) +
-                      " is not supported (1, 2, 4.0 and 4.1 are)");
-            in.skip_line();
-            in.expect("$EndMeshFormat");
-          }
-        else if (section == "$NOD" || section == "$Nodes")
-          {
-            if (section == "$NOD") // format 1 has no $MeshFormat
-              version = 1.;
-            read_nodes();
-          }
-        else if (section == "$ELM" || section == "$Elements")
-          read_elements();
-        else if (section == "$Entities")
-          read_entities();
-        else if (section[0] == '$')
-          in.skip_section(section);
-        else
-          in.fail("unexpected '" + std::string(section) +
-                  "' outside a section");
-      }
-
-    if (n_unsupported > 0)
-      throw InputError(
-        "mesh file '" + file_name + "': " + std::to_string(n_unsupported) +
-        " element(s) of a type hyperelastic does not read, the first gmsh "
-        "element " +
-        std::to_string(unsupported_tag) + ", a " +
-        gmsh_element_name(unsupported_type) + ". A " + std::to_string(dim) +
-        "D mesh consists of " +
-        (dim == 2 ? "3-node triangles (plus lines"
-                  : "4-node tetrahedra (plus triangles, lines") +
-        " and points for boundary ids): mesh with simplices, first order "
-        "(gmsh: no Recombine, Mesh.ElementOrder = 1), and check "
-        "'Problem/Dimension'");
-    if (mesh.cells.empty() && cells_required)
-      throw InputError("mesh file '" + file_name + "' holds no " +
-                       (dim == 2 ? "3-node triangles" : "4-node tetrahedra") +
-                       " (gmsh element type " + std::to_string(simplex_type) +
-                       "), only lower-dimensional elements: mesh the " +
-                       (dim == 2 ? "surface (gmsh -2)" : "volume (gmsh -3)"));
-
-    for (unsigned int d = 0; d < 3; ++d)
-      {
-        mesh.lower[d] = std::numeric_limits<double>::infinity();
-        mesh.upper[d] = -std::numeric_limits<double>::infinity();
-      }
-    for (const CellData<dim> &cell : mesh.cells)
-      for (const unsigned int v : cell.vertices)
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            mesh.lower[d] = std::min(mesh.lower[d], nodes[v][d]);
-            mesh.upper[d] = std::max(mesh.upper[d], nodes[v][d]);
-          }
-    if constexpr (dim == 3)
-      mesh.vertices = std::move(nodes);
-    else
-      {
-        mesh.vertices.reserve(nodes.size());
-        for (const Point<3> &x : nodes)
-          mesh.vertices.emplace_back(x[0], x[1]);
-      }
-    return mesh;
+  template <int dim>
+  GmshMesh<dim>
+  read_gmsh(const std::string &file_name,
+            const std::string &entry,
+            const bool         cells_required)
+  {
+    GmshParser<dim> parser(file_name, entry);
+    parser.read_sections();
+    return parser.finish(cells_required);
   }
 
   template GmshMesh<2>

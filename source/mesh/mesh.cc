@@ -113,6 +113,123 @@ namespace hyperelastic
                              std::to_string(negative.size()) +
                              " negatively oriented cells"));
     }
+
+    /// The reader's part of create_mesh(): the whole mesh generated, or
+    /// read and checked (kept as @p mesh's list of cells, partitioned into
+    /// @p owner, if @p from_cells; else triangulated into @p serial, refined
+    /// and partitioned). A failure is recorded in @p outcome rather than
+    /// thrown, so that the other ranks learn of it; the exception other than
+    /// an InputError is returned to be rethrown as it was.
+    template <int dim>
+    std::exception_ptr
+    prepare_whole_mesh(const MeshParameters      &parameters,
+                       const unsigned int         n_ranks,
+                       const bool                 from_cells,
+                       CheckedMesh<dim>          &mesh,
+                       std::vector<unsigned int> &owner,
+                       Triangulation<dim>        &serial,
+                       MeshStatistics            &stats,
+                       ReaderOutcome             &outcome)
+    {
+      std::exception_ptr reader_exception;
+      stats.reader = true;
+      try
+        {
+          if (parameters.source == MeshSource::box)
+            {
+              Timer timer;
+              build_box(parameters, serial);
+              stats.read_time = timer.wall_time();
+            }
+          else
+            {
+              mesh = read_and_check_gmsh<dim>(parameters.file, stats);
+              outcome.reoriented_cells = mesh.n_reoriented;
+            }
+          if (!from_cells && parameters.source == MeshSource::file)
+            {
+              Timer timer;
+              triangulate_checked_mesh(parameters.file, mesh, serial);
+              mesh = CheckedMesh<dim>();
+              stats.build_time += timer.wall_time();
+            }
+
+          Timer timer;
+          if (from_cells)
+            {
+              owner = partition_cells(mesh, n_ranks);
+              std::set<types::boundary_id> ids;
+              for (std::size_t i = 0; i < mesh.neighbors.size(); ++i)
+                if (mesh.neighbors[i] < 0)
+                  ids.insert(mesh.face_ids[i]);
+              outcome.boundary_ids.assign(ids.begin(), ids.end());
+              outcome.global_cells = mesh.cells.size();
+            }
+          else
+            {
+              serial.refine_global(parameters.global_refinements);
+              outcome.boundary_ids = serial.get_boundary_ids();
+              if (n_ranks > 1)
+                GridTools::partition_triangulation(
+                  n_ranks, serial, SparsityTools::Partitioner::metis);
+              outcome.global_cells = serial.n_active_cells();
+            }
+          stats.partition_time = timer.wall_time();
+        }
+      catch (const InputError &e)
+        {
+          outcome.status  = ReaderOutcome::input_error;
+          outcome.message = e.what();
+        }
+      catch (const std::exception &e)
+        {
+          outcome.status   = ReaderOutcome::other_error;
+          outcome.message  = exception_message(e);
+          reader_exception = std::current_exception();
+        }
+      catch (...)
+        {
+          outcome.status   = ReaderOutcome::other_error;
+          outcome.message  = "unknown exception";
+          reader_exception = std::current_exception();
+        }
+      return reader_exception;
+    }
+
+    /// The reader's @p outcome sent to every other rank; a failure thrown
+    /// on every rank (on the reader as the exception it caught).
+    void
+    share_outcome(ReaderOutcome            &outcome,
+                  const std::exception_ptr &reader_exception,
+                  const bool                is_reader,
+                  const unsigned int        reader,
+                  const MPI_Comm            comm)
+    {
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      if (n_ranks > 1)
+        {
+          if (is_reader)
+            {
+              const std::vector<char> buffer = Utilities::pack(outcome, false);
+              for (unsigned int r = 0; r < n_ranks; ++r)
+                if (r != reader)
+                  send(buffer, r, outcome_tag, comm);
+            }
+          else
+            outcome = Utilities::unpack<ReaderOutcome>(
+              receive(reader, outcome_tag, comm), false);
+        }
+      if (outcome.status == ReaderOutcome::input_error)
+        throw InputError(outcome.message);
+      if (outcome.status == ReaderOutcome::other_error)
+        {
+          if (reader_exception)
+            std::rethrow_exception(reader_exception);
+          throw std::runtime_error("creating the mesh failed on MPI rank " +
+                                   std::to_string(reader) + ": " +
+                                   outcome.message);
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -138,97 +255,13 @@ namespace hyperelastic
     ReaderOutcome      outcome;
     std::exception_ptr reader_exception;
     if (is_reader)
-      {
-        stats.reader = true;
-        try
-          {
-            if (parameters.source == MeshSource::box)
-              {
-                Timer timer;
-                build_box(parameters, serial);
-                stats.read_time = timer.wall_time();
-              }
-            else
-              {
-                mesh = read_and_check_gmsh<dim>(parameters.file, stats);
-                outcome.reoriented_cells = mesh.n_reoriented;
-              }
-            if (!from_cells && parameters.source == MeshSource::file)
-              {
-                Timer timer;
-                triangulate_checked_mesh(parameters.file, mesh, serial);
-                mesh = CheckedMesh<dim>();
-                stats.build_time += timer.wall_time();
-              }
-
-            Timer timer;
-            if (from_cells)
-              {
-                owner = partition_cells(mesh, n_ranks);
-                std::set<types::boundary_id> ids;
-                for (std::size_t i = 0; i < mesh.neighbors.size(); ++i)
-                  if (mesh.neighbors[i] < 0)
-                    ids.insert(mesh.face_ids[i]);
-                outcome.boundary_ids.assign(ids.begin(), ids.end());
-                outcome.global_cells = mesh.cells.size();
-              }
-            else
-              {
-                serial.refine_global(parameters.global_refinements);
-                outcome.boundary_ids = serial.get_boundary_ids();
-                if (n_ranks > 1)
-                  GridTools::partition_triangulation(
-                    n_ranks, serial, SparsityTools::Partitioner::metis);
-                outcome.global_cells = serial.n_active_cells();
-              }
-            stats.partition_time = timer.wall_time();
-          }
-        catch (const InputError &e)
-          {
-            outcome.status  = ReaderOutcome::input_error;
-            outcome.message = e.what();
-          }
-        catch (const std::exception &e)
-          {
-            outcome.status   = ReaderOutcome::other_error;
-            outcome.message  = exception_message(e);
-            reader_exception = std::current_exception();
-          }
-        catch (...)
-          {
-            outcome.status   = ReaderOutcome::other_error;
-            outcome.message  = "unknown exception";
-            reader_exception = std::current_exception();
-          }
-      }
+      reader_exception = prepare_whole_mesh(
+        parameters, n_ranks, from_cells, mesh, owner, serial, stats, outcome);
 
     // The other ranks wait for the outcome first, so that a failure of the
     // reader reaches them as the same exception.
     Timer timer;
-    if (n_ranks > 1)
-      {
-        if (is_reader)
-          {
-            const std::vector<char> buffer = Utilities::pack(outcome, false);
-            for (unsigned int r = 0; r < n_ranks; ++r)
-              if (r != reader)
-                send(buffer, r, outcome_tag, comm);
-          }
-        else
-          outcome =
-            Utilities::unpack<ReaderOutcome>(receive(reader, outcome_tag, comm),
-                                             false);
-      }
-    if (outcome.status == ReaderOutcome::input_error)
-      throw InputError(outcome.message);
-    if (outcome.status == ReaderOutcome::other_error)
-      {
-        if (reader_exception)
-          std::rethrow_exception(reader_exception);
-        throw std::runtime_error("creating the mesh failed on MPI rank " +
-                                 std::to_string(reader) + ": " +
-                                 outcome.message);
-      }
+    share_outcome(outcome, reader_exception, is_reader, reader, comm);
 
     // The reader makes and sends one description per rank, one at a time
     // (as TriangulationDescription::Utilities::

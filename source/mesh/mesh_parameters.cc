@@ -77,4 +77,30 @@ namespace hyperelastic
     global_refinements = prm.get_integer("Global refinements");
     prm.leave_subsection();
   }
+
+  void
+  MeshParameters::check_dimension(const unsigned int dim) const
+  {
+    if (source != MeshSource::box)
+      return;
+    const auto size = [](const auto &v) { return std::to_string(v.size()); };
+    if (lower_corner.size() != dim)
+      reject("Mesh/Lower corner",
+             size(lower_corner) + " values",
+             "needs " + std::to_string(dim) + " values for dimension " +
+               std::to_string(dim));
+    if (upper_corner.size() != dim)
+      reject("Mesh/Upper corner",
+             size(upper_corner) + " values",
+             "needs " + std::to_string(dim) + " values");
+    if (subdivisions.size() != dim)
+      reject("Mesh/Subdivisions",
+             size(subdivisions) + " values",
+             "needs " + std::to_string(dim) + " values");
+    for (unsigned int d = 0; d < dim; ++d)
+      if (!(upper_corner[d] > lower_corner[d]))
+        reject("Mesh/Upper corner",
+               std::to_string(upper_corner[d]),
+               "every coordinate must exceed the lower corner's");
+  }
 } // namespace hyperelastic

@@ -81,7 +81,11 @@ namespace hyperelastic::testing
       parameters.problem.formulation = with_pressure ? "mixed" : "displacement";
       parameters.problem.mixed_element =
         degree == 2 ? MixedElement::taylor_hood : MixedElement::mini;
-      return create_formulation<dim>(parameters)->finite_element();
+      return create_formulation<dim>({parameters.problem,
+                                      parameters.material,
+                                      parameters.linear_solver,
+                                      parameters.time_integration})
+        ->finite_element();
     }
 
     static MeshParameters

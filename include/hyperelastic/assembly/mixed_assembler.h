@@ -33,6 +33,7 @@
 #include <hyperelastic/materials/volumetric_split.h>
 
 #include <memory>
+#include <vector>
 
 namespace hyperelastic
 {
@@ -106,6 +107,17 @@ namespace hyperelastic
     evaluate_cell(CellData         &data,
                   CellOutput        output,
                   TangentProjection project_tangent) const;
+
+    /// The pressure-projection stabilisation of 'P1/P1 stabilized' added to
+    /// the cell's energy, residual (and matrix, @p with_matrix): the
+    /// pressure @p p_q at each quadrature point, its mean @p p_mean over the
+    /// cell of measure @p volume.
+    void
+    add_stabilization(CellData                  &data,
+                      const std::vector<double> &p_q,
+                      double                     p_mean,
+                      double                     volume,
+                      bool                       with_matrix) const;
 
     enum class BubbleOutcome
     {

@@ -113,6 +113,28 @@ namespace hyperelastic
     const double *
     ghosted_values(const VectorType &u) const;
 
+    /// The prescribed value of every ghosted dof into prescribed_ghosted
+    /// (NaN where free). False on every rank if some rank cannot write the
+    /// rows itself (block positions not found, or constraints other than
+    /// Dirichlet ones).
+    bool
+    gather_prescribed_values(
+      const dealii::AffineConstraints<double> &constraints) const;
+
+    /// Adds the rows of cell @p ci (stress @p P, element tangent @p K) to
+    /// the matrix's CRS arrays (@p offsets, @p values) and to the right-hand
+    /// side @p b: the columns of prescribed dofs (@p prescribed, NaN where
+    /// free) go to the right-hand side; a prescribed row only sizes its
+    /// diagonal (constrained_diagonal).
+    void
+    add_cell_rows(unsigned int                  ci,
+                  const dealii::Tensor<2, dim> &P,
+                  const ElementMatrix          &K,
+                  const double                 *prescribed,
+                  const int                    *offsets,
+                  double                       *values,
+                  double                       *b) const;
+
     /// Finds the positions of each cell's node blocks in @p matrix.
     bool
     find_block_positions(const MatrixType &matrix) const;

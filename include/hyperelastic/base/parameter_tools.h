@@ -39,8 +39,9 @@ namespace hyperelastic
 
   /// The bulk-modulus entry @p name of the current subsection @p section
   /// (declared with Patterns::Anything): a positive number, or 'inf' for an
-  /// exactly incompressible material (mixed formulation only: Parameters
-  /// checks that). Anything else is rejected naming section/name.
+  /// exactly incompressible material (mixed formulation only: the
+  /// displacement formulation's scene check rejects it). Anything else is
+  /// rejected naming section/name.
   double
   get_bulk_modulus(dealii::ParameterHandler &prm,
                    const std::string        &section,

@@ -44,7 +44,7 @@ namespace hyperelastic
     bool
     linear_steps() const override
     {
-      return context.parameters.time_integration.linearize_once;
+      return context.time_integration.linearize_once;
     }
 
     double

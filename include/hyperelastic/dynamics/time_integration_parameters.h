@@ -51,5 +51,9 @@ namespace hyperelastic
     declare(ParameterHandler &prm);
     void
     parse(ParameterHandler &prm);
+    /// 'Initial velocity' against Problem/Dimension @p dim (one expression
+    /// per coordinate, if given).
+    void
+    check_dimension(unsigned int dim) const;
   };
 } // namespace hyperelastic

@@ -13,12 +13,15 @@
 
 #include <hyperelastic/assembly/elasticity_operator.h>
 #include <hyperelastic/base/linear_algebra.h>
+#include <hyperelastic/contact/contact_parameters.h>
+#include <hyperelastic/dynamics/time_integration_parameters.h>
+#include <hyperelastic/loads/loading_parameters.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/output/checkpoint_file.h>
 #include <hyperelastic/output/step_reporter.h>
 #include <hyperelastic/output/step_summary.h>
-#include <hyperelastic/parameters.h>
 #include <hyperelastic/solvers/load_stepping.h>
+#include <hyperelastic/solvers/load_stepping_parameters.h>
 
 #include <memory>
 
@@ -40,7 +43,17 @@ namespace hyperelastic
   template <int dim>
   struct SteppingContext
   {
-    const Parameters              &parameters;
+    /// The scheme, or quasi-static ('Time integration').
+    const TimeIntegrationParameters &time_integration;
+    /// The step control ('Load stepping').
+    const LoadSteppingParameters &load_stepping;
+    /// The number of load steps and the expressions' constants ('Loading').
+    const LoadingParameters &loading;
+    /// Whether the scene has contact ('Contact').
+    const ContactParameters &contact;
+    /// The time a quasi-static load path takes for a model with history
+    /// ('Material/Viscoelasticity').
+    const double                   quasi_static_duration;
     const dealii::DoFHandler<dim> &dof_handler;
     const dealii::Mapping<dim>    &mapping;
     const Material<dim>           &material;

@@ -5,15 +5,17 @@
 #pragma once
 
 #include <hyperelastic/formulation/formulation.h>
-#include <hyperelastic/parameters.h>
+#include <hyperelastic/formulation/formulation_registry.h>
 
 namespace hyperelastic
 {
+  /// The displacement formulation (Problem/Formulation = displacement).
   template <int dim>
   class DisplacementFormulation : public Formulation<dim>
   {
   public:
-    explicit DisplacementFormulation(const Parameters &parameters);
+    /// Reads the degree and the linear solver's preconditioner choice.
+    explicit DisplacementFormulation(const FormulationInputs &inputs);
 
     dealii::FESystem<dim>
     finite_element() const override;
@@ -37,7 +39,7 @@ namespace hyperelastic
     /// The scene checks: an exactly incompressible material needs the
     /// pressure as an unknown.
     static void
-    check(Parameters &parameters);
+    check(const FormulationInputs &inputs);
 
   protected:
     const unsigned int degree;

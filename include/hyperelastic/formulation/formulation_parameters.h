@@ -14,6 +14,7 @@ namespace hyperelastic
 {
   using dealii::ParameterHandler;
 
+  /// The Problem subsection.
   struct ProblemParameters
   {
     unsigned int dimension = 3;
@@ -33,4 +34,15 @@ namespace hyperelastic
     void
     parse(ParameterHandler &prm);
   };
+
+  struct MaterialParameters;
+
+  /// Completes the Problem subsection from what other entries imply: the
+  /// alias 'Material/Model = stiffness warping' names the stiffness warping
+  /// formulation (rejected with 'Formulation = mixed'), and a formulation
+  /// with an element of its own (the mixed pair) sets the displacement
+  /// degree.
+  void
+  resolve_formulation(ProblemParameters        &problem,
+                      const MaterialParameters &material);
 } // namespace hyperelastic

@@ -80,5 +80,14 @@ namespace hyperelastic
     declare(ParameterHandler &prm);
     void
     parse(ParameterHandler &prm);
+    /// The numbers of coordinates and expressions against Problem/Dimension
+    /// @p dim (body force, Dirichlet components and vertices, point loads,
+    /// boundary loads).
+    void
+    check_dimension(unsigned int dim) const;
+    /// No two Dirichlet conditions prescribe the same component of the same
+    /// boundary id (and vertex).
+    void
+    check_dirichlet_conflicts() const;
   };
 } // namespace hyperelastic

@@ -31,5 +31,9 @@ namespace hyperelastic
     declare(ParameterHandler &prm);
     void
     parse(ParameterHandler &prm, const std::string &scene_folder);
+    /// The box's entries against Problem/Dimension @p dim (one value per
+    /// coordinate, the upper corner above the lower one).
+    void
+    check_dimension(unsigned int dim) const;
   };
 } // namespace hyperelastic

@@ -1,22 +1,18 @@
 // Inverted cells of a displacement field: how many cells have J = det(I +
-// grad u) <= 0 at a quadrature point, the smallest J and where it is. Used
-// to accept or reject a converged state (judge_inverted_cells) and for the
-// CSV summary.
+// grad u) <= 0 at a quadrature point, the smallest J and where it is. For
+// the CSV summary, and for the solver's verdict on a converged state
+// (solvers/inverted_cell_policy.h).
 #pragma once
 
-#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <hyperelastic/solvers/newton_parameters.h>
-
-#include <string>
-
 namespace hyperelastic
 {
+  /// The inverted cells of a displacement field (find_inverted_cells()).
   template <int dim>
   struct InvertedCells
   {
@@ -36,19 +32,4 @@ namespace hyperelastic
   find_inverted_cells(const dealii::Mapping<dim>                  &mapping,
                       const dealii::DoFHandler<dim>               &dof_handler,
                       const dealii::TrilinosWrappers::MPI::Vector &u);
-
-  /// The verdict on a converged state with @p inverted cells, by
-  /// 'Newton/Inverted elements at equilibrium': nothing if there are none; a
-  /// warning on @p pcout if accepted (a model defined at J <= 0, @p defined,
-  /// can have them as its correct discrete answer, e.g. near the clamped
-  /// edges of a crushed body); a ConvergenceFailure otherwise (for a model
-  /// undefined there such a state is never a solution). @p model: the
-  /// model's name for the messages.
-  template <int dim>
-  void
-  judge_inverted_cells(const InvertedCells<dim>         &inverted,
-                       const NewtonParameters           &newton,
-                       const std::string                &model,
-                       bool                              defined,
-                       const dealii::ConditionalOStream &pcout);
 } // namespace hyperelastic
