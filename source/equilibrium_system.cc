@@ -137,8 +137,11 @@ namespace hyperelastic
   }
 
   template <int dim>
-  unsigned int
-  EquilibriumSystem<dim>::solve_linearization(const double forcing)
+  void
+  EquilibriumSystem<dim>::solve_linearization(
+    const double        forcing,
+    const bool          soften_predictor,
+    LinearizationSolve &solve)
   {
     {
       TimerOutput::Scope scope(parts.timer, "preconditioner setup");
@@ -150,40 +153,37 @@ namespace hyperelastic
     // A linear problem takes this one solve, and no Newton iteration
     // follows to correct it: it also meets Newton's relative residual
     // tolerance where that is the tighter one.
-    if (is_linear() && forcing == 0.)
+    if (properties().linear && forcing == 0.)
       tolerance = std::min(tolerance, parts.newton.relative_residual_tolerance);
     update = 0.;
-    const unsigned int iterations =
+    solve.linear_iterations +=
       parts.linear_solver.solve(tangent, update, rhs, tolerance);
     active_constraints->distribute(update);
-    return iterations;
+    if (soften_predictor)
+      {
+        unsigned int extension_iterations = 0;
+        const bool   softened =
+          soften_inverting_predictor(extension_iterations);
+        solve.linear_iterations += extension_iterations;
+        solve.softened_predictor = softened;
+      }
   }
 
   template <int dim>
-  bool
-  EquilibriumSystem<dim>::is_linear() const
+  NonlinearSystem::Properties
+  EquilibriumSystem<dim>::properties() const
   {
+    Properties properties;
     // 'Linearize once per step' treats each time step as linear: one full
     // step is accepted.
-    return parts.material.is_linear() || stepping->linear_steps();
-  }
-
-  template <int dim>
-  bool
-  EquilibriumSystem<dim>::has_potential() const
-  {
+    properties.linear = parts.material.is_linear() || stepping->linear_steps();
     // Without one (a saddle point, forces without an energy, a load without
     // a potential) the line search tests the residual norm.
-    return elasticity->is_conservative() && parts.formulation.has_potential();
-  }
-
-  template <int dim>
-  std::string
-  EquilibriumSystem<dim>::why_no_potential() const
-  {
+    properties.has_potential =
+      elasticity->is_conservative() && parts.formulation.has_potential();
     if (!parts.formulation.has_potential())
-      return parts.formulation.why_no_potential();
-    return "a load has no potential";
+      properties.why_no_potential = parts.formulation.why_no_potential();
+    return properties;
   }
 
   template <int dim>
@@ -204,7 +204,7 @@ namespace hyperelastic
     if (active_constraints != &increment_constraints ||
         !parts.material.defined_for_inverted_elements() ||
         parts.dof_handler.get_fe().n_components() != dim ||
-        !has_potential())
+        !properties().has_potential)
       return false;
     const double J_now = evaluate_trial(0., TrialCheck::admissibility).min_J;
     const TrialPoint predicted = evaluate_trial(1., TrialCheck::energy);
@@ -346,9 +346,12 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
-  EquilibriumSystem<dim>::verify_converged_state()
+  NonlinearSystem::Verdict
+  EquilibriumSystem<dim>::judge_converged_state(const bool update_lagged)
   {
+    if (update_lagged &&
+        elasticity->update_lagged(u_ghosted, current_load_factor))
+      return Verdict::continue_iterating;
     // Accepted with a warning, or rejected, by the scene's policy.
     const InvertedCells<dim> inverted =
       find_inverted_cells(parts.mapping, parts.dof_handler, u_ghosted);
@@ -359,13 +362,7 @@ namespace hyperelastic
                          parts.material_model,
                          parts.material.defined_for_inverted_elements(),
                          parts.pcout);
-  }
-
-  template <int dim>
-  bool
-  EquilibriumSystem<dim>::update_lagged_quantities()
-  {
-    return elasticity->update_lagged(u_ghosted, current_load_factor);
+    return Verdict::accepted;
   }
 
   // ------------------------------------------------------- SteppedSystem

@@ -114,14 +114,12 @@ namespace hyperelastic
     bool
     assemble_linearization(bool              impose_constraint_increment,
                            TangentProjection projection) override;
-    unsigned int
-    solve_linearization(double forcing) override;
-    bool
-    is_linear() const override;
-    bool
-    has_potential() const override;
-    std::string
-    why_no_potential() const override;
+    void
+    solve_linearization(double              forcing,
+                        bool                soften_predictor,
+                        LinearizationSolve &solve) override;
+    Properties
+    properties() const override;
     double
     directional_derivative() const override;
     /// The predictor's update inverts cells of a state without inverted
@@ -130,9 +128,12 @@ namespace hyperelastic
     /// with linear elasticity at zero Poisson's ratio at rest (which moves
     /// a clamped block's interior with its ends instead of bulging it
     /// through itself) replaces it if its energy is lower. Displacement
-    /// formulation, models defined at J <= 0, with a potential.
+    /// formulation, models defined at J <= 0, with a potential. Called by
+    /// solve_linearization() when asked to; returns whether it replaced the
+    /// update, @p linear_iterations gets the Krylov iterations spent on
+    /// trying.
     bool
-    soften_inverting_predictor(unsigned int &linear_iterations) override;
+    soften_inverting_predictor(unsigned int &linear_iterations);
     double
     largest_feasible_step() override;
     TrialPoint
@@ -143,10 +144,8 @@ namespace hyperelastic
     residual_norms() override;
     double
     solution_scale() const override;
-    void
-    verify_converged_state() override;
-    bool
-    update_lagged_quantities() override;
+    Verdict
+    judge_converged_state(bool update_lagged) override;
 
     // SteppedSystem
     void

@@ -1,5 +1,6 @@
 // Newton iteration with a backtracking line search on the total potential
-// energy (or the residual norm), residual and update tests, and a printed
+// energy (or the residual norm), the tangent policy's fallback after a failed
+// iteration, residual and update tests, lagged equations, and a printed
 // table.
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/solvers/newton_solver.h>
@@ -7,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 namespace hyperelastic
@@ -125,13 +128,14 @@ namespace hyperelastic
 
   bool
   NewtonSolver::line_search(NonlinearSystem  &system,
+                            const bool        has_potential,
                             const bool        test_merit,
                             const TrialPoint &current,
                             NewtonIteration  &row,
                             std::string      &failure) const
   {
     using Check               = NonlinearSystem::TrialCheck;
-    const bool  test_residual = test_merit && !system.has_potential();
+    const bool  test_residual = test_merit && !has_potential;
     const bool  test_energy   = test_merit && !test_residual;
     const Check check         = !parameters.line_search ? Check::none
                                 : test_energy           ? Check::energy
@@ -198,134 +202,178 @@ namespace hyperelastic
       }
   }
 
+  bool
+  NewtonSolver::attempt(NonlinearSystem                     &system,
+                        const NonlinearSystem::Properties   &properties,
+                        const TangentProjection              projection,
+                        const bool                           soften_predictor,
+                        SolveState                          &state,
+                        NewtonIteration                     &row,
+                        NonlinearSystem::LinearizationSolve &solve,
+                        std::string                         &failure) const
+  {
+    try
+      {
+        state.moving_constraints =
+          system.assemble_linearization(state.moving_constraints, projection);
+        system.solve_linearization(row.forcing,
+                                   soften_predictor && state.moving_constraints,
+                                   solve);
+
+        const bool test_merit =
+          parameters.line_search && !state.moving_constraints;
+        // The merit of the current iterate, where not known yet.
+        if (test_merit && properties.has_potential &&
+            !std::isfinite(state.current.energy))
+          state.current =
+            system.evaluate_trial(0., NonlinearSystem::TrialCheck::energy);
+        if (test_merit && !properties.has_potential &&
+            !std::isfinite(state.current.residual))
+          state.current =
+            system.evaluate_trial(0., NonlinearSystem::TrialCheck::residual);
+        return line_search(system,
+                           properties.has_potential,
+                           test_merit,
+                           state.current,
+                           row,
+                           failure);
+      }
+    catch (const ConvergenceFailure &e)
+      {
+        // A Krylov failure (an indefinite tangent can break CG).
+        failure = e.what();
+        return false;
+      }
+  }
+
+  NewtonIteration
+  NewtonSolver::iterate(NonlinearSystem                   &system,
+                        const NonlinearSystem::Properties &properties,
+                        const TangentPolicy               &policy,
+                        const unsigned int                 it,
+                        SolveState                        &state,
+                        const NewtonResult                &result) const
+  {
+    const std::vector<NewtonIteration> &history = result.history;
+    const double nan            = std::numeric_limits<double>::quiet_NaN();
+    const bool   first_of_solve = it == state.budget_start + 1;
+    TangentProjection projection =
+      policy.projection(first_of_solve,
+                        state.current.residual,
+                        first_of_solve ? nan
+                                       : history[state.budget_start].residual);
+    // The smallest J of the current iterate (not known before the first
+    // iteration).
+    const double min_J = history.empty() ? nan : history.back().min_J;
+    const double eisenstat_walker = forcing_term(history, state.target);
+    const bool   predictor        = state.moving_constraints;
+    // The iteration that imposes the prescribed-displacement increment is
+    // the load step's predictor: solved fully. So is a projected tangent's:
+    // far from the solution among inverted cells, loose solves give
+    // directions that wander between minima (the crush of stress test 25:
+    // 36 iterations inexact, 18 exact).
+    const auto forcing = [&](const TangentProjection p) {
+      return (properties.linear || predictor ||
+              TangentPolicy::projects_somewhere(p, min_J))
+               ? 0.
+               : eisenstat_walker;
+    };
+
+    NewtonIteration                     row;
+    NonlinearSystem::LinearizationSolve solve;
+    std::string                         failure;
+    // Each fallback projects at more points than the tangent before it:
+    // at most three attempts.
+    row.forcing = forcing(projection);
+    while (!attempt(system,
+                    properties,
+                    projection,
+                    policy.softens_inverting_predictor(),
+                    state,
+                    row,
+                    solve,
+                    failure))
+      {
+        const std::optional<TangentProjection> next =
+          policy.fallback(projection);
+        if (!next)
+          throw ConvergenceFailure(failure + " in Newton iteration " +
+                                   std::to_string(it) + "\n" + table(result));
+        // Repeat this iteration from the same iterate with a tangent that
+        // projects more (the projected tangent's direction descends).
+        system.evaluate_trial(0., NonlinearSystem::TrialCheck::none);
+        projection  = *next;
+        row.forcing = forcing(projection);
+      }
+    row.projected = projection == TangentProjection::every_point;
+    row.projected_where_inverted =
+      TangentPolicy::projects_where_inverted(projection, min_J);
+    row.softened_predictor = solve.softened_predictor;
+    row.iteration          = it;
+    row.linear_iterations  = solve.linear_iterations;
+    row.update             = system.accept_trial();
+    if (state.moving_constraints && row.step_length == 1.)
+      state.moving_constraints = false;
+    state.current.energy       = row.energy;
+    state.current.energy_noise = row.energy_noise;
+    return row;
+  }
+
+  bool
+  NewtonSolver::finished(NonlinearSystem                   &system,
+                         const NonlinearSystem::Properties &properties,
+                         const ConvergenceTest             &convergence,
+                         const ResidualNorms               &norms,
+                         const NewtonIteration             &row,
+                         const unsigned int                 it,
+                         SolveState                        &state) const
+  {
+    // A linear problem is solved by its first full step (to the linear
+    // solver's tolerance): a second solve would only polish round-off.
+    const bool linear_done = properties.linear && row.step_length == 1.;
+    if (state.moving_constraints ||
+        !(convergence.converged(norms, row.update, system.solution_scale()) ||
+          linear_done))
+      return false;
+    if (system.judge_converged_state(true) ==
+        NonlinearSystem::Verdict::accepted)
+      return true;
+    // The equations changed (lagged friction): their energy at the current
+    // iterate is new.
+    state.current      = TrialPoint();
+    state.budget_start = it;
+    if (verbose)
+      pcout << "   (lagged quantities updated)" << std::endl;
+    return false;
+  }
+
   NewtonResult
   NewtonSolver::solve(NonlinearSystem &system) const
   {
-    const ConvergenceTest convergence(parameters);
-    NewtonResult          result;
-    result.residual_merit = parameters.line_search && !system.has_potential();
+    const ConvergenceTest             convergence(parameters);
+    const TangentPolicy               policy(parameters.tangent);
+    const NonlinearSystem::Properties properties = system.properties();
+    NewtonResult                      result;
+    result.residual_merit = parameters.line_search && !properties.has_potential;
     if (verbose)
       {
         if (result.residual_merit)
           pcout << "   (line search on the residual norm: "
-                << system.why_no_potential() << ")" << std::endl;
+                << properties.why_no_potential << ")" << std::endl;
         pcout << header(result.residual_merit) << std::endl;
       }
 
-    // True until a full step has moved the constrained unknowns to their
-    // prescribed values. Until then the energy cannot be compared between
-    // iterates (each satisfies different constraints), so the line search
-    // only keeps the iterates admissible.
-    bool       moving_constraints = true;
-    TrialPoint current; // the current iterate, energy unknown yet
-    // The residual the convergence test asks for (from the last iteration).
-    double target = 0.;
-    // Each solve of the (lagged) equations has the full iteration budget;
-    // the table counts on through them.
-    unsigned int budget_start = 0;
-    for (unsigned int it = 1; it - budget_start <= parameters.max_iterations;
+    SolveState state;
+    for (unsigned int it = 1;
+         it - state.budget_start <= parameters.max_iterations;
          ++it)
       {
-        const bool automatic = parameters.tangent == NewtonTangent::automatic;
-        const bool fallback =
-          automatic ||
-          parameters.tangent == NewtonTangent::exact_then_projected;
-        NewtonIteration row;
-        row.projected = parameters.tangent == NewtonTangent::projected;
-        // The automatic tangent: projected where elements are inverted while
-        // far from the solution (the exact tangent is indefinite there and
-        // Newton would climb to a saddle), exact near it (quadratic end).
-        TangentProjection projection = row.projected
-                                         ? TangentProjection::every_point
-                                         : TangentProjection::none;
-        if (automatic &&
-            (it == budget_start + 1 ||
-             current.residual > NewtonParameters::automatic_switch_ratio *
-                                  result.history[budget_start].residual))
-          projection = TangentProjection::inverted_points;
-        unsigned int linear_its = 0;
-        // Whether @p p projects anything at this iterate: the points with
-        // J <= 0 only matter once the iterate has some.
-        const auto projects_inverted_points = [&](const TangentProjection p) {
-          return p == TangentProjection::inverted_points &&
-                 !result.history.empty() && result.history.back().min_J <= 0.;
-        };
-        const double eisenstat_walker = forcing_term(result.history, target);
-        const bool   predictor        = moving_constraints;
-        for (;;)
-          {
-            // The iteration that imposes the prescribed-displacement
-            // increment is the load step's predictor: solved fully. So is
-            // a projected tangent's: far from the solution among inverted
-            // cells, loose solves give directions that wander between
-            // minima (the crush of stress test 25: 36 iterations inexact,
-            // 18 exact).
-            row.forcing =
-              (system.is_linear() || predictor ||
-               projection == TangentProjection::every_point ||
-               projects_inverted_points(projection))
-                ? 0.
-                : eisenstat_walker;
-            std::string failure;
-            try
-              {
-                moving_constraints =
-                  system.assemble_linearization(moving_constraints, projection);
-                linear_its += system.solve_linearization(row.forcing);
-                unsigned int extension_its = 0;
-                if (automatic && moving_constraints)
-                  row.softened_predictor =
-                    system.soften_inverting_predictor(extension_its);
-                linear_its += extension_its;
-
-                const bool test_merit =
-                  parameters.line_search && !moving_constraints;
-                // The merit of the current iterate, where not known yet.
-                if (test_merit && system.has_potential() &&
-                    !std::isfinite(current.energy))
-                  current =
-                    system.evaluate_trial(0.,
-                                          NonlinearSystem::TrialCheck::energy);
-                if (test_merit && !system.has_potential() &&
-                    !std::isfinite(current.residual))
-                  current = system.evaluate_trial(
-                    0., NonlinearSystem::TrialCheck::residual);
-                if (line_search(system, test_merit, current, row, failure))
-                  break;
-              }
-            catch (const ConvergenceFailure &e)
-              {
-                // A Krylov failure (an indefinite tangent can break CG).
-                failure = e.what();
-              }
-            if (!fallback || row.projected)
-              throw ConvergenceFailure(failure + " in Newton iteration " +
-                                       std::to_string(it) + "\n" +
-                                       table(result));
-            // Repeat this iteration from the same iterate with the projected
-            // tangent, whose direction descends.
-            system.evaluate_trial(0., NonlinearSystem::TrialCheck::none);
-            if (automatic && projection == TangentProjection::none)
-              projection = TangentProjection::inverted_points;
-            else
-              {
-                projection    = TangentProjection::every_point;
-                row.projected = true;
-              }
-          }
-        row.projected_where_inverted = projects_inverted_points(projection);
-        row.iteration         = it;
-        row.linear_iterations = linear_its;
-        row.update            = system.accept_trial();
-        if (moving_constraints && row.step_length == 1.)
-          moving_constraints = false;
-        current.energy       = row.energy;
-        current.energy_noise = row.energy_noise;
-
-        const ResidualNorms norms = system.residual_norms();
-        row.residual              = norms.residual;
-        current.residual          = norms.residual;
-        current.residual_noise    = norms.noise;
+        NewtonIteration row =
+          iterate(system, properties, policy, it, state, result);
+        const ResidualNorms norms    = system.residual_norms();
+        row.residual                 = norms.residual;
+        state.current.residual       = norms.residual;
+        state.current.residual_noise = norms.noise;
         result.history.push_back(row);
         if (verbose)
           pcout << format_row(row) << std::endl;
@@ -336,27 +384,9 @@ namespace hyperelastic
             "have inverted with a model undefined there)\n" +
             table(result));
 
-        target = convergence.residual_target(norms);
-        // A linear problem is solved by its first full step (to the linear
-        // solver's tolerance): a second solve would only polish round-off.
-        const bool linear_done = system.is_linear() && row.step_length == 1.;
-        if (!moving_constraints &&
-            (convergence.converged(norms, row.update, system.solution_scale()) ||
-             linear_done))
-          {
-            if (system.update_lagged_quantities())
-              {
-                // The equations changed (lagged friction): their energy at
-                // the current iterate is new.
-                current      = TrialPoint();
-                budget_start = it;
-                if (verbose)
-                  pcout << "   (lagged quantities updated)" << std::endl;
-                continue;
-              }
-            system.verify_converged_state();
-            return result;
-          }
+        state.target = convergence.residual_target(norms);
+        if (finished(system, properties, convergence, norms, row, it, state))
+          return result;
       }
     throw ConvergenceFailure("Newton did not converge in " +
                              std::to_string(parameters.max_iterations) +

@@ -26,7 +26,7 @@ namespace hyperelastic
     bool projected_where_inverted = false;
     /// The predictor's update inverted cells and was replaced by the
     /// increment extended at zero Poisson's ratio
-    /// (NonlinearSystem::soften_inverting_predictor).
+    /// (NonlinearSystem::solve_linearization).
     bool softened_predictor = false;
     /// Whether the energy had to decrease (sufficient decrease) in this
     /// iteration's line search; false while prescribed displacements are

@@ -10,6 +10,7 @@
 #include <hyperelastic/solvers/convergence_test.h>
 #include <hyperelastic/solvers/newton_parameters.h>
 #include <hyperelastic/solvers/newton_result.h>
+#include <hyperelastic/solvers/tangent_policy.h>
 
 #include <limits>
 #include <string>
@@ -42,6 +43,27 @@ namespace hyperelastic
   public:
     virtual ~NonlinearSystem() = default;
 
+    /// What Newton needs to know of the system once per solve.
+    struct Properties
+    {
+      /// The residual is linear in the unknowns: the first Newton step,
+      /// solved to the linear solver's tolerance, is the solution.
+      bool linear = false;
+      /// The system has a total potential energy (its residual is the
+      /// energy's gradient). Without one the line search tests the residual
+      /// norm instead.
+      bool has_potential = true;
+      /// Why there is no potential (for the Newton table).
+      std::string why_no_potential = "a load has no potential";
+    };
+
+    /// The system's Properties; they do not change during a solve.
+    virtual Properties
+    properties() const
+    {
+      return Properties();
+    }
+
     /// Linearize at the current iterate. With @p impose_constraint_increment
     /// the next update must also move the constrained unknowns from their
     /// current to their prescribed values. Returns whether that increment is
@@ -52,36 +74,33 @@ namespace hyperelastic
     assemble_linearization(bool              impose_constraint_increment,
                            TangentProjection projection) = 0;
 
+    /// What solve_linearization() did.
+    struct LinearizationSolve
+    {
+      /// Krylov iterations, added as each solve returns (those of the
+      /// solves before a failure stay counted).
+      unsigned int linear_iterations = 0;
+      /// The predictor's update was replaced by a gentler extension of the
+      /// constraint increment (set only when asked for).
+      bool softened_predictor = false;
+    };
+
     /// Solve the linearized system for the direction du, with a Krylov
     /// method to the relative tolerance @p forcing (0: as accurately as the
     /// linear solver is set up to; the system never solves more loosely
-    /// than asked). Returns Krylov iterations.
-    virtual unsigned int
-    solve_linearization(double forcing) = 0;
-
-    /// True if the residual is linear in the unknowns: the first Newton
-    /// step, solved to the linear solver's tolerance, is the solution.
-    virtual bool
-    is_linear() const
-    {
-      return false;
-    }
-
-    /// Whether the system has a total potential energy (its residual is the
-    /// energy's gradient). Without one the line search tests the residual
-    /// norm instead.
-    virtual bool
-    has_potential() const
-    {
-      return true;
-    }
-
-    /// Why there is no potential (for the Newton table).
-    virtual std::string
-    why_no_potential() const
-    {
-      return "a load has no potential";
-    }
+    /// than asked). Adds the Krylov iterations to @p solve.
+    ///
+    /// With @p soften_predictor (the automatic tangent policy's
+    /// request, for the linearization that imposes the constraint
+    /// increment: a load step's predictor): if the update would invert
+    /// cells of a state that has none, the system may replace it by a
+    /// gentler extension of the increment into the body, and sets
+    /// @p solve.softened_predictor to whether it did (the Krylov iterations
+    /// spent on trying count too).
+    virtual void
+    solve_linearization(double              forcing,
+                        bool                soften_predictor,
+                        LinearizationSolve &solve) = 0;
 
     /// Derivative of the energy at the current iterate along du (negative for
     /// a descent direction). Valid when du leaves the constraints unchanged.
@@ -95,19 +114,6 @@ namespace hyperelastic
     largest_feasible_step()
     {
       return 1.;
-    }
-
-    /// Called by the automatic tangent policy after the solve of the
-    /// linearization that imposes the constraint increment (a load step's
-    /// predictor): if that update would invert cells of a state that has
-    /// none, the system may replace it by a gentler extension of the
-    /// increment into the body. Returns whether it did; @p
-    /// linear_iterations gets the Krylov iterations spent on trying.
-    virtual bool
-    soften_inverting_predictor(unsigned int &linear_iterations)
-    {
-      (void)linear_iterations;
-      return false;
     }
 
     /// What evaluate_trial() must find out about a trial iterate.
@@ -128,6 +134,7 @@ namespace hyperelastic
     virtual double
     accept_trial() = 0;
 
+    /// The residual norms at the current iterate (after accept_trial()).
     virtual ResidualNorms
     residual_norms() = 0;
 
@@ -136,25 +143,33 @@ namespace hyperelastic
     virtual double
     solution_scale() const = 0;
 
-    /// Called once Newton's tests pass; throws ConvergenceFailure if the
-    /// converged state is not acceptable (for example inverted elements).
-    virtual void
-    verify_converged_state() = 0;
-
-    /// Called once Newton's tests pass, before verify_converged_state():
-    /// updates quantities the equations lag behind the iterate (friction's
-    /// normal forces and tangents). Returns true if they changed enough that
-    /// Newton must go on from the current iterate (the energy changed).
-    virtual bool
-    update_lagged_quantities()
+    /// What judge_converged_state() decided.
+    enum class Verdict
     {
-      return false;
-    }
+      accepted,          ///< the converged state stands
+      continue_iterating ///< the equations changed: Newton goes on
+    };
+
+    /// Called once Newton's tests pass. With @p update_lagged, first updates
+    /// quantities the equations lag behind the iterate (friction's normal
+    /// forces and tangents): if they changed enough that Newton must go on
+    /// from the current iterate (the energy changed), returns
+    /// continue_iterating. Otherwise checks the converged state: throws
+    /// ConvergenceFailure if it is not acceptable (for example inverted
+    /// elements), and returns accepted.
+    virtual Verdict
+    judge_converged_state(bool update_lagged) = 0;
   };
 
+  /// Newton's method with a backtracking line search for a NonlinearSystem:
+  /// the tangent from a TangentPolicy, inexact linear solves with
+  /// Eisenstat-Walker forcing terms, the ConvergenceTest, and the Newton
+  /// table.
   class NewtonSolver
   {
   public:
+    /// Newton with @p parameters; with @p verbose the table is printed to
+    /// @p pcout as it grows.
     NewtonSolver(const NewtonParameters    &parameters,
                  dealii::ConditionalOStream pcout,
                  bool                       verbose);
@@ -178,6 +193,69 @@ namespace hyperelastic
     }
 
   private:
+    /// What a solve carries from one iteration to the next.
+    struct SolveState
+    {
+      /// True until a full step has moved the constrained unknowns to their
+      /// prescribed values. Until then the energy cannot be compared
+      /// between iterates (each satisfies different constraints), so the
+      /// line search only keeps the iterates admissible.
+      bool moving_constraints = true;
+      /// The current iterate (energy unknown yet).
+      TrialPoint current;
+      /// The residual the convergence test asks for (from the last
+      /// iteration).
+      double target = 0.;
+      /// Each solve of the (lagged) equations has the full iteration
+      /// budget; the table counts on through them. The iteration before
+      /// the first one of the current solve.
+      unsigned int budget_start = 0;
+    };
+
+    /// One iteration from the current iterate: the projection @p policy
+    /// chooses, then attempt() and, while that fails, attempt() again from
+    /// the same iterate with the policy's fallback; throws
+    /// ConvergenceFailure once the failure is final. Takes the step and
+    /// returns the iteration's row (without its residual).
+    NewtonIteration
+    iterate(NonlinearSystem                   &system,
+            const NonlinearSystem::Properties &properties,
+            const TangentPolicy               &policy,
+            unsigned int                       iteration,
+            SolveState                        &state,
+            const NewtonResult                &result) const;
+
+    /// Linearize with @p projection, solve to the relative tolerance
+    /// row.forcing and search along the direction. @p soften_predictor: the
+    /// tangent policy asks for the softened predictor, which the system is
+    /// asked for when this linearization imposes the constraint increment
+    /// (NonlinearSystem::solve_linearization). Returns false (and the
+    /// reason) if the line search or the linear solve failed; the Krylov
+    /// iterations add up in @p solve.
+    bool
+    attempt(NonlinearSystem                     &system,
+            const NonlinearSystem::Properties   &properties,
+            TangentProjection                    projection,
+            bool                                 soften_predictor,
+            SolveState                          &state,
+            NewtonIteration                     &row,
+            NonlinearSystem::LinearizationSolve &solve,
+            std::string                         &failure) const;
+
+    /// The convergence and lagging decision after @p row, the iteration
+    /// @p iteration (residual norms @p norms): true once Newton's tests
+    /// pass and the system accepts the state. If instead the system's
+    /// lagged quantities changed, the solve of the new equations starts
+    /// from the current iterate with a fresh budget.
+    bool
+    finished(NonlinearSystem                   &system,
+             const NonlinearSystem::Properties &properties,
+             const ConvergenceTest             &convergence,
+             const ResidualNorms               &norms,
+             const NewtonIteration             &row,
+             unsigned int                       iteration,
+             SolveState                        &state) const;
+
     /// The Eisenstat-Walker forcing term for the next linear solve, from the
     /// rows so far of this Newton solve (0 for an exact solve).
     double
@@ -191,6 +269,7 @@ namespace hyperelastic
     /// is acceptable.
     bool
     line_search(NonlinearSystem  &system,
+                bool              has_potential,
                 bool              test_merit,
                 const TrialPoint &current,
                 NewtonIteration  &row,
