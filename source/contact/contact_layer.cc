@@ -134,19 +134,21 @@ namespace hyperelastic
                     ElasticityOperator<dim> &elasticity)
   {
     const ContactParameters &parameters = setup.parameters;
-    ObstacleContact<dim>    *obstacles  = nullptr;
-    SelfContact<dim>        *self       = nullptr;
+    // A term timed in the section "contact", owned by the operator.
+    const auto add = [&](auto term) {
+      term->set_timer(setup.timer);
+      auto *const added = term.get();
+      elasticity.add_term(std::move(term));
+      return added;
+    };
+    ObstacleContact<dim> *obstacles = nullptr;
+    SelfContact<dim>     *self      = nullptr;
     if (!parameters.obstacles.empty())
-      {
-        auto term = std::make_unique<ObstacleContact<dim>>(parameters,
-                                                           setup.constants,
-                                                           setup.dof_handler,
-                                                           setup.moduli,
-                                                           setup.dynamic);
-        term->set_timer(setup.timer);
-        obstacles = term.get();
-        elasticity.add_term(std::move(term));
-      }
+      obstacles = add(std::make_unique<ObstacleContact<dim>>(parameters,
+                                                             setup.constants,
+                                                             setup.dof_handler,
+                                                             setup.moduli,
+                                                             setup.dynamic));
     if (parameters.self_contact)
       {
         if (setup.has_pressure_unknowns)
@@ -154,13 +156,10 @@ namespace hyperelastic
             "'Contact/Self contact = true' needs 'Problem/Formulation = "
             "displacement' (the mixed formulation's block preconditioner "
             "keeps the tangent's sparsity, which self-contact pairs grow)");
-        auto term = std::make_unique<SelfContact<dim>>(parameters,
-                                                       setup.dof_handler,
-                                                       setup.moduli,
-                                                       setup.dynamic);
-        term->set_timer(setup.timer);
-        self = term.get();
-        elasticity.add_term(std::move(term));
+        self = add(std::make_unique<SelfContact<dim>>(parameters,
+                                                      setup.dof_handler,
+                                                      setup.moduli,
+                                                      setup.dynamic));
       }
     if (!obstacles && !self)
       return nullptr;
