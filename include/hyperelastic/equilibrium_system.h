@@ -122,18 +122,6 @@ namespace hyperelastic
     properties() const override;
     double
     directional_derivative() const override;
-    /// The predictor's update inverts cells of a state without inverted
-    /// ones (a large prescribed increment, the tangent's linear extension
-    /// far outside its range: the one-step crush): the increment extended
-    /// with linear elasticity at zero Poisson's ratio at rest (which moves
-    /// a clamped block's interior with its ends instead of bulging it
-    /// through itself) replaces it if its energy is lower. Displacement
-    /// formulation, models defined at J <= 0, with a potential. Called by
-    /// solve_linearization() when asked to; returns whether it replaced the
-    /// update, @p linear_iterations gets the Krylov iterations spent on
-    /// trying.
-    bool
-    soften_inverting_predictor(unsigned int &linear_iterations);
     double
     largest_feasible_step() override;
     TrialPoint
@@ -186,6 +174,18 @@ namespace hyperelastic
     path_product(const VectorType &a, const VectorType &b) const override;
 
   private:
+    /// The predictor's update inverts cells of a state without inverted
+    /// ones (a large prescribed increment, the tangent's linear extension
+    /// far outside its range: the one-step crush): the increment extended
+    /// with linear elasticity at zero Poisson's ratio at rest (which moves
+    /// a clamped block's interior with its ends instead of bulging it
+    /// through itself) replaces it if its energy is lower. Displacement
+    /// formulation, models defined at J <= 0, with a potential. Called by
+    /// solve_linearization() when asked to; returns whether it replaced the
+    /// update, @p linear_iterations gets the Krylov iterations spent on
+    /// trying.
+    bool
+    soften_inverting_predictor(unsigned int &linear_iterations);
     /// Assembles the forces at u_ghosted into internal_force, external_force
     /// and residual; returns the residual norm on the free unknowns and its
     /// round-off level in @p noise.

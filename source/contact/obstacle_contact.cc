@@ -60,6 +60,25 @@ namespace hyperelastic
                              : nullptr);
       }
 
+    const BarrierSettings settings =
+      barrier_settings(parameters,
+                       std::sqrt(gather_vertices(dof_handler)),
+                       moduli,
+                       dynamic);
+    d_hat_value = settings.d_hat;
+    kappa       = settings.kappa;
+    eps_setting = settings.eps;
+
+    check_start();
+  }
+
+  template <int dim>
+  ObstacleContact<dim>::~ObstacleContact() = default;
+
+  template <int dim>
+  double
+  ObstacleContact<dim>::gather_vertices(const DoFHandler<dim> &dof_handler)
+  {
     // The boundary vertices whose dofs this rank owns (ghost cells too: an
     // owned vertex may lie only on a neighbour's boundary face); the faces
     // where the ghost layer ends are not the body's boundary.
@@ -124,12 +143,13 @@ namespace hyperelastic
                               Utilities::MPI::min(lower[d], comm);
         diagonal += extent * extent;
       }
-    const BarrierSettings settings =
-      barrier_settings(parameters, std::sqrt(diagonal), moduli, dynamic);
-    d_hat_value = settings.d_hat;
-    kappa       = settings.kappa;
-    eps_setting = settings.eps;
+    return diagonal;
+  }
 
+  template <int dim>
+  void
+  ObstacleContact<dim>::check_start() const
+  {
     // The start must be feasible.
     std::string               problem;
     const std::vector<Placed> start = placed(0.);
@@ -152,8 +172,6 @@ namespace hyperelastic
     throw_input_error_of_first_rank(problem, comm);
   }
 
-  template <int dim>
-  ObstacleContact<dim>::~ObstacleContact() = default;
 
   template <int dim>
   bool

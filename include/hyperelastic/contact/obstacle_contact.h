@@ -184,6 +184,17 @@ namespace hyperelastic
       double area = 0.;
     };
 
+    /// The boundary vertices whose dofs this rank owns, with their area
+    /// weights; returns the squared diagonal of the body's bounding box
+    /// (collective).
+    double
+    gather_vertices(const dealii::DoFHandler<dim> &dof_handler);
+
+    /// The start must be feasible: a vertex on the wrong side of an
+    /// obstacle at t = 0 is an InputError naming both (collective).
+    void
+    check_start() const;
+
     /// An obstacle where it stands at one time.
     struct Placed
     {
