@@ -72,9 +72,7 @@ namespace hyperelastic
         if (self)
           {
             const ContactMeasures m = self->measure(state.u);
-            all.min_distance =
-              obstacles ? std::min(all.min_distance, m.min_distance)
-                        : m.min_distance;
+            all.min_distance = std::min(all.min_distance, m.min_distance);
             all.active_pairs += m.active_pairs;
           }
         s.more.insert(s.more.end(), all.forces.begin(), all.forces.end());

@@ -17,13 +17,14 @@ namespace hyperelastic
     double weight = 1.;
 
     /// Where a vertex solved at @p x, which started the step at @p start,
-    /// is at the step's end.
+    /// is at the step's end (callers skip it where c = 1: x itself, and
+    /// the start positions may not be set yet).
     template <int dim>
     dealii::Point<dim>
     end_position(const dealii::Point<dim> &start,
                  const dealii::Point<dim> &x) const
     {
-      return c != 1. ? start + c * (x - start) : x;
+      return start + c * (x - start);
     }
 
     /// The factors of a pair's energy, gradient and Hessian in the solved

@@ -44,10 +44,11 @@ namespace hyperelastic
                            const std::string &entry,
                            const MPI_Comm     comm)
   {
-    if (dealii::Utilities::MPI::max(bad_here ? 1 : 0, comm) != 0)
-      throw InputError(
-        "scene entry '" + entry +
+    throw_input_error_if_any(
+      bad_here,
+      "scene entry '" + entry +
         "' is not a finite number somewhere on the mesh (a division by zero, "
-        "the logarithm of a negative number or similar)");
+        "the logarithm of a negative number or similar)",
+      comm);
   }
 } // namespace hyperelastic
