@@ -84,6 +84,19 @@ namespace hyperelastic
   {
     this->elasticity = &elasticity;
     this->stepping   = &stepping;
+    // Quasi-static, the bodies no Dirichlet condition holds rest on contact
+    // (the supports check let them through only then).
+    if (stepping.needs_supports())
+      {
+        std::set<types::boundary_id> ids;
+        for (const auto &d : parts.boundary_conditions.dirichlet)
+          ids.insert(d.id);
+        unheld = std::make_unique<UnheldRigidMotions<dim>>(parts.mapping,
+                                                           parts.dof_handler,
+                                                           ids);
+        if (unheld->empty())
+          unheld.reset();
+      }
   }
 
   // ------------------------------------------------------ NonlinearSystem
@@ -133,6 +146,8 @@ namespace hyperelastic
                                 tangent,
                                 rhs,
                                 projection);
+    if (unheld)
+      unheld->regularize(tangent);
     return moves_constraints || moves_terms;
   }
 
@@ -159,6 +174,9 @@ namespace hyperelastic
     solve.linear_iterations +=
       parts.linear_solver.solve(tangent, update, rhs, tolerance);
     active_constraints->distribute(update);
+    if (unheld)
+      unheld->remove_unresisted(
+        u, tangent, rhs, residual_target(), force_scale, update);
     if (soften_predictor)
       {
         unsigned int extension_iterations = 0;
@@ -320,6 +338,14 @@ namespace hyperelastic
                             external_force.l2_norm(),
                             force_size.magnitude});
     return {norm, force_scale, noise};
+  }
+
+  template <int dim>
+  double
+  EquilibriumSystem<dim>::residual_target() const
+  {
+    return ConvergenceTest(parts.newton)
+      .residual_target({0., force_scale, force_size.round_off});
   }
 
   template <int dim>
@@ -512,6 +538,8 @@ namespace hyperelastic
                                 tangent,
                                 rhs,
                                 TangentProjection::none);
+    if (unheld)
+      unheld->regularize(tangent);
   }
 
   template <int dim>
@@ -527,6 +555,9 @@ namespace hyperelastic
     const unsigned int iterations = parts.linear_solver.solve(
       tangent, x, b, parts.linear_solver_parameters.relative_tolerance);
     homogeneous_constraints.distribute(x);
+    if (unheld)
+      unheld->remove_unresisted(
+        u, tangent, b, residual_target(), force_scale, x);
     return iterations;
   }
 

@@ -19,10 +19,14 @@
 #include <hyperelastic/formulation/formulation.h>
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/materials/material.h>
+#include <hyperelastic/solvers/convergence_test.h>
 #include <hyperelastic/solvers/linear_solver.h>
 #include <hyperelastic/solvers/linear_solver_parameters.h>
 #include <hyperelastic/solvers/load_stepping.h>
 #include <hyperelastic/solvers/newton_parameters.h>
+#include <hyperelastic/solvers/unheld_rigid_motions.h>
+
+#include <memory>
 
 #include <string>
 
@@ -191,6 +195,10 @@ namespace hyperelastic
     /// round-off level in @p noise.
     double
     free_residual_norm(double &noise);
+    /// The residual Newton's convergence test asks for at the last
+    /// residual evaluation.
+    double
+    residual_target() const;
 
     /// (Re)builds the tangent's sparsity: the mesh's couplings and the load
     /// terms' (CouplingTerm::add_couplings). Collective.
@@ -202,6 +210,9 @@ namespace hyperelastic
     dealii::IndexSet         owned_dofs, relevant_dofs;
     ElasticityOperator<dim> *elasticity = nullptr;
     TimeStepping<dim>       *stepping   = nullptr;
+    /// Quasi-static bodies held by contact alone: their unresisted rigid
+    /// motions (null if every body has a Dirichlet condition).
+    std::unique_ptr<UnheldRigidMotions<dim>> unheld;
 
     /// Dirichlet constraints: with the increment to the prescribed values
     /// (first iteration of a load step) and homogeneous (later iterations);

@@ -54,7 +54,8 @@ namespace hyperelastic
     std::vector<Body<dim>>
     merge_components(const std::vector<std::vector<double>> &all_info,
                      const std::vector<unsigned int>        &offset,
-                     Components                             &global)
+                     Components                             &global,
+                     std::map<unsigned int, unsigned int>   &index_of_root)
     {
       // Merge the components of each body.
       std::map<unsigned int, Body<dim>> merged;
@@ -83,9 +84,6 @@ namespace hyperelastic
           }
       // In an order that does not depend on the partition: by volume tag,
       // then by the boxes' lower corners.
-      std::vector<Body<dim>> bodies;
-      for (const auto &[root, body] : merged)
-        bodies.push_back(body);
       const auto key = [](const Body<dim> &b) {
         std::array<double, dim + 1> k;
         k[0] = b.volume_tag;
@@ -93,9 +91,18 @@ namespace hyperelastic
           k[d + 1] = b.box.get_boundary_points().first[d];
         return k;
       };
-      std::sort(bodies.begin(),
-                bodies.end(),
-                [&](const auto &a, const auto &b) { return key(a) < key(b); });
+      std::vector<unsigned int> roots;
+      for (const auto &[root, body] : merged)
+        roots.push_back(root);
+      std::sort(roots.begin(), roots.end(), [&](const auto a, const auto b) {
+        return key(merged.at(a)) < key(merged.at(b));
+      });
+      std::vector<Body<dim>> bodies;
+      for (const unsigned int root : roots)
+        {
+          index_of_root[root] = bodies.size();
+          bodies.push_back(merged.at(root));
+        }
       return bodies;
     }
   } // namespace
@@ -115,7 +122,8 @@ namespace hyperelastic
   template <int dim>
   std::vector<Body<dim>>
   find_bodies(const DoFHandler<dim>              &dof_handler,
-              const std::set<types::boundary_id> &dirichlet_ids)
+              const std::set<types::boundary_id> &dirichlet_ids,
+              std::vector<unsigned int>          *body_of_cell)
   {
     const MPI_Comm comm = dof_handler.get_communicator();
     // The vertices of the owned cells (by their first dof), joined per cell.
@@ -198,7 +206,21 @@ namespace hyperelastic
             global.join(it->second, c);
         }
 
-    return merge_components<dim>(all_info, offset, global);
+    std::map<unsigned int, unsigned int> index_of_root;
+    std::vector<Body<dim>>               bodies =
+      merge_components<dim>(all_info, offset, global, index_of_root);
+    if (body_of_cell)
+      {
+        // This rank's component c is global component offset[rank] + c.
+        const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+        body_of_cell->assign(dof_handler.get_triangulation().n_active_cells(),
+                             numbers::invalid_unsigned_int);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            (*body_of_cell)[cell->active_cell_index()] = index_of_root.at(
+              global.root(offset[rank] + component.at(local.root(id(cell, 0)))));
+      }
+    return bodies;
   }
 
   template <int dim>
@@ -208,17 +230,21 @@ namespace hyperelastic
                  const bool                          contact_may_hold,
                  const unsigned int                  max_sections)
   {
+    // Contact may hold bodies without a Dirichlet condition (a body
+    // squeezed between plates): the rigid motions nothing resists are then
+    // removed from each Newton update (UnheldRigidMotions).
+    if (contact_may_hold)
+      return;
     if (dirichlet_ids.empty())
       throw InputError("no Dirichlet condition is set (sections 'Dirichlet 1' "
                        "... 'Dirichlet " +
                        std::to_string(max_sections) +
-                       "'): rigid-body motions would be free and the "
-                       "quasi-static problem singular (in dynamics, "
-                       "'Time integration/Scheme', the mass makes it regular)");
+                       "') and no contact can hold the body: rigid-body "
+                       "motions would be free and the quasi-static problem "
+                       "singular (in dynamics, 'Time integration/Scheme', the "
+                       "mass makes it regular)");
     // Each body must be held: a mesh may hold several (a body clamped,
     // another pressed onto it).
-    if (contact_may_hold)
-      return;
     const std::vector<Body<dim>> bodies = find_bodies(dof_handler, dirichlet_ids);
     for (unsigned int k = 0; k < bodies.size(); ++k)
       if (!bodies[k].held)
@@ -244,7 +270,11 @@ namespace hyperelastic
                  bool,
                  unsigned int);
   template std::vector<Body<2>>
-  find_bodies(const DoFHandler<2> &, const std::set<types::boundary_id> &);
+  find_bodies(const DoFHandler<2> &,
+              const std::set<types::boundary_id> &,
+              std::vector<unsigned int> *);
   template std::vector<Body<3>>
-  find_bodies(const DoFHandler<3> &, const std::set<types::boundary_id> &);
+  find_bodies(const DoFHandler<3> &,
+              const std::set<types::boundary_id> &,
+              std::vector<unsigned int> *);
 } // namespace hyperelastic

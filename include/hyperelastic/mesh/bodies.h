@@ -31,17 +31,21 @@ namespace hyperelastic
 
   /// The bodies of the mesh of @p dof_handler (identical on every rank, in
   /// the order of their volume tags, then of their boxes); @p dirichlet_ids:
-  /// the boundary ids of the Dirichlet conditions. Collective.
+  /// the boundary ids of the Dirichlet conditions. With @p body_of_cell,
+  /// also the index of each locally owned cell's body (by active cell
+  /// index; invalid_unsigned_int for the other cells). Collective.
   template <int dim>
   std::vector<Body<dim>>
   find_bodies(const dealii::DoFHandler<dim>              &dof_handler,
-              const std::set<dealii::types::boundary_id> &dirichlet_ids);
+              const std::set<dealii::types::boundary_id> &dirichlet_ids,
+              std::vector<unsigned int> *body_of_cell = nullptr);
 
-  /// The supports of a problem that needs them (quasi-static): throws
-  /// InputError if there is no Dirichlet condition at all (@p max_sections:
-  /// the scene's last 'Dirichlet k' section, for the message) or, unless
-  /// contact may hold bodies (@p contact_may_hold), if a body of the mesh
-  /// has no boundary face with one of the @p dirichlet_ids. Collective.
+  /// The supports of a problem that needs them (quasi-static): unless
+  /// contact may hold bodies (@p contact_may_hold), throws InputError if
+  /// there is no Dirichlet condition at all (@p max_sections: the scene's
+  /// last 'Dirichlet k' section, for the message) or if a body of the mesh
+  /// has no boundary face with one of the @p dirichlet_ids, naming it.
+  /// Collective.
   template <int dim>
   void
   check_supports(const dealii::DoFHandler<dim>              &dof_handler,

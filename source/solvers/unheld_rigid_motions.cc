@@ -1,0 +1,193 @@
+// Rigid motions of the unheld bodies: the tangent's regularization and the
+// removal of the unresisted motions from Newton's updates.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <hyperelastic/materials/tangent_projection.h>
+#include <hyperelastic/mesh/bodies.h>
+#include <hyperelastic/solvers/unheld_rigid_motions.h>
+
+#include <cmath>
+
+namespace hyperelastic
+{
+  using namespace dealii;
+
+  template <int dim>
+  UnheldRigidMotions<dim>::UnheldRigidMotions(
+    const Mapping<dim>                 &mapping,
+    const DoFHandler<dim>              &dof_handler,
+    const std::set<types::boundary_id> &dirichlet_ids)
+      : comm(dof_handler.get_communicator())
+      , owned(dof_handler.locally_owned_dofs())
+  {
+    std::vector<unsigned int>    body_of_cell;
+    const std::vector<Body<dim>> all =
+      find_bodies(dof_handler, dirichlet_ids, &body_of_cell);
+    std::vector<int> unheld_index(all.size(), -1);
+    for (unsigned int b = 0; b < all.size(); ++b)
+      if (!all[b].held)
+        {
+          unheld_index[b] = bodies.size();
+          bodies.emplace_back();
+        }
+    if (bodies.empty())
+      return;
+
+    // The displacement nodes: support point j of the first base element,
+    // its dim unknowns component_to_system_index(c, j).
+    const FiniteElement<dim> &fe = dof_handler.get_fe();
+    const unsigned int n_nodes   = fe.base_element(0).n_dofs_per_cell();
+    FEValues<dim>      fe_values(mapping,
+                            fe,
+                            Quadrature<dim>(fe.get_unit_support_points()),
+                            update_quadrature_points);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::set<types::global_dof_index>    seen;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          unheld_index[body_of_cell[cell->active_cell_index()]] >= 0)
+        {
+          UnheldBody &body =
+            bodies[unheld_index[body_of_cell[cell->active_cell_index()]]];
+          fe_values.reinit(cell);
+          cell->get_dof_indices(dofs);
+          for (unsigned int j = 0; j < n_nodes; ++j)
+            {
+              Node node;
+              for (unsigned int c = 0; c < dim; ++c)
+                node.dofs[c] = dofs[fe.component_to_system_index(c, j)];
+              if (!owned.is_element(node.dofs[0]) ||
+                  !seen.insert(node.dofs[0]).second)
+                continue;
+              node.X =
+                fe_values.quadrature_point(fe.component_to_system_index(0, j));
+              body.nodes.push_back(node);
+            }
+        }
+  }
+
+  template <int dim>
+  void
+  UnheldRigidMotions<dim>::regularize(MatrixType &tangent)
+  {
+    for (UnheldBody &body : bodies)
+      {
+        double sum = 0., count = 0.;
+        for (const Node &node : body.nodes)
+          for (const auto i : node.dofs)
+            sum += std::abs(tangent.diag_element(i)), count += 1.;
+        sum        = Utilities::MPI::sum(sum, comm);
+        count      = Utilities::MPI::sum(count, comm);
+        body.scale = count > 0. ? sum / count : 0.;
+        body.beta  = 1e-8 * body.scale;
+        for (const Node &node : body.nodes)
+          for (const auto i : node.dofs)
+            tangent.add(i, i, body.beta);
+      }
+    tangent.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  std::vector<VectorType>
+  UnheldRigidMotions<dim>::motions(const UnheldBody &body,
+                                   const VectorType &u) const
+  {
+    // About the body's centre (better conditioned than the origin).
+    Tensor<1, dim> centre;
+    for (const Node &node : body.nodes)
+      for (unsigned int c = 0; c < dim; ++c)
+        centre[c] += node.X[c] + u(node.dofs[c]);
+    const double n = Utilities::MPI::sum(double(body.nodes.size()), comm);
+    centre         = Utilities::MPI::sum(centre, comm) / std::max(n, 1.);
+
+    std::vector<VectorType> r(n_modes);
+    for (VectorType &v : r)
+      v.reinit(owned, comm);
+    for (const Node &node : body.nodes)
+      {
+        Tensor<1, dim> x;
+        for (unsigned int c = 0; c < dim; ++c)
+          x[c] = node.X[c] + u(node.dofs[c]) - centre[c];
+        for (unsigned int c = 0; c < dim; ++c)
+          r[c](node.dofs[c]) = 1.;
+        if constexpr (dim == 2)
+          {
+            r[2](node.dofs[0]) = -x[1];
+            r[2](node.dofs[1]) = x[0];
+          }
+        else
+          // Rotations about x, y, z: e_k x (x - centre).
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              const unsigned int a = (k + 1) % 3, b = (k + 2) % 3;
+              r[3 + k](node.dofs[a]) = -x[b];
+              r[3 + k](node.dofs[b]) = x[a];
+            }
+      }
+    // Modified Gram-Schmidt (global dot products).
+    for (unsigned int i = 0; i < n_modes; ++i)
+      {
+        r[i].compress(VectorOperation::insert);
+        for (unsigned int j = 0; j < i; ++j)
+          r[i].add(-(r[i] * r[j]), r[j]);
+        const double norm = r[i].l2_norm();
+        if (norm > 0.)
+          r[i] /= norm;
+      }
+    return r;
+  }
+
+  template <int dim>
+  unsigned int
+  UnheldRigidMotions<dim>::remove_unresisted(const VectorType &u,
+                                             const MatrixType &tangent,
+                                             const VectorType &rhs,
+                                             const double residual_target,
+                                             const double force_scale,
+                                             VectorType       &update) const
+  {
+    unsigned int removed = 0;
+    for (const UnheldBody &body : bodies)
+      {
+        const std::vector<VectorType> r = motions(body, u);
+        // The tangent (without beta) restricted to the rigid motions.
+        SmallMatrix<n_modes> S{};
+        VectorType           Kr(owned, comm);
+        for (unsigned int j = 0; j < n_modes; ++j)
+          {
+            tangent.vmult(Kr, r[j]);
+            for (unsigned int i = 0; i <= j; ++i)
+              S[i][j] = r[i] * Kr - (i == j ? body.beta : 0.);
+          }
+        std::array<double, n_modes> values;
+        SmallMatrix<n_modes>        vectors;
+        jacobi_eigen_decomposition<n_modes>(S, values, vectors);
+        for (unsigned int k = 0; k < n_modes; ++k)
+          {
+            if (!(std::abs(values[k]) <= 1e-6 * body.scale))
+              continue;
+            VectorType v(owned, comm);
+            for (unsigned int i = 0; i < n_modes; ++i)
+              v.add(vectors[i][k], r[i]);
+            // A net force along the motion (a contact surface not quite
+            // flat) moves the body until it balances: Newton's step along
+            // it stays while that force exceeds a tenth of the residual
+            // target and 1e-10 of the forces' size (below, it is round-off,
+            // or would only move the body far along a motion that barely
+            // changes the energy).
+            const double vr = v * rhs;
+            if (!(std::abs(vr) <=
+                  std::max(0.1 * residual_target, 1e-10 * force_scale)))
+              continue;
+            update.add(-(v * update), v);
+            ++removed;
+          }
+      }
+    return removed;
+  }
+
+  template class UnheldRigidMotions<2>;
+  template class UnheldRigidMotions<3>;
+} // namespace hyperelastic
