@@ -183,32 +183,36 @@ namespace
   random_pair(const Kind k, const bool grid, std::mt19937 &rng)
   {
     std::uniform_real_distribution<double> u01(0., 1.);
-    const auto uniform = [&](double a, double b) { return a + (b - a) * u01(rng); };
+    const auto                             uniform = [&](double a, double b) {
+      return a + (b - a) * u01(rng);
+    };
     const double scale = std::pow(10., uniform(-3., 3.));
     const double gap   = scale * std::pow(10., uniform(-3., 0.));
     const double la = scale * uniform(0.3, 1.), lb = scale * uniform(0.3, 1.);
     V3           offset;
     for (double &c : offset)
       c = 3. * scale * uniform(-1., 1.);
-    const V3 u = unit(rng), m = orthogonal(u, rng);
-    X        x;
-    double   exact = -1.;
-    const auto set = [&](const V3 &a0, const V3 &ea, const V3 &b0, const V3 &eb) {
-      for (int d = 0; d < 3; ++d)
-        {
-          x[d]     = offset[d] + a0[d];
-          x[3 + d] = offset[d] + a0[d] + ea[d];
-          x[6 + d] = offset[d] + b0[d];
-          x[9 + d] = offset[d] + b0[d] + eb[d];
-        }
-    };
+    const V3   u = unit(rng), m = orthogonal(u, rng);
+    X          x;
+    double     exact = -1.;
+    const auto set =
+      [&](const V3 &a0, const V3 &ea, const V3 &b0, const V3 &eb) {
+        for (int d = 0; d < 3; ++d)
+          {
+            x[d]     = offset[d] + a0[d];
+            x[3 + d] = offset[d] + a0[d] + ea[d];
+            x[6 + d] = offset[d] + b0[d];
+            x[9 + d] = offset[d] + b0[d] + eb[d];
+          }
+      };
     const auto combine = [](const V3 &p, double a, const V3 &q, double b) {
-      return V3{{a * p[0] + b * q[0], a * p[1] + b * q[1], a * p[2] + b * q[2]}};
+      return V3{
+        {a * p[0] + b * q[0], a * p[1] + b * q[1], a * p[2] + b * q[2]}};
     };
     const V3 zero{{0., 0., 0.}};
-    if (grid && (k == Kind::parallel || k == Kind::anti_parallel ||
-                 k == Kind::collinear_overlapping ||
-                 k == Kind::collinear_disjoint))
+    if (grid &&
+        (k == Kind::parallel || k == Kind::anti_parallel ||
+         k == Kind::collinear_overlapping || k == Kind::collinear_disjoint))
       {
         // Integers up to 2^10 times 2^e: sums and the factors 1, 2, 1/2
         // are exact.
@@ -248,7 +252,7 @@ namespace
           {
             // Beyond a1 by (1 + j/4) |ea|, pointing either way.
             const double beyond = 1. + (1 + rng() % 4) * 0.25;
-            b0 = combine(a0, 1., ea, f > 0 ? beyond : beyond - f);
+            b0       = combine(a0, 1., ea, f > 0 ? beyond : beyond - f);
             double l = 0.;
             for (const double c : ea)
               l += c * c;
@@ -263,9 +267,13 @@ namespace
       {
       case Kind::general:
         {
-          V3 b0 = combine(u, uniform(-1., 1.) * scale, m, uniform(-1., 1.) * scale);
+          V3 b0 =
+            combine(u, uniform(-1., 1.) * scale, m, uniform(-1., 1.) * scale);
           b0[2] += uniform(-1., 1.) * scale;
-          set(zero, combine(u, la, zero, 0.), b0, combine(unit(rng), lb, zero, 0.));
+          set(zero,
+              combine(u, la, zero, 0.),
+              b0,
+              combine(unit(rng), lb, zero, 0.));
           break;
         }
       case Kind::parallel:
@@ -273,7 +281,10 @@ namespace
         {
           const double sign = k == Kind::parallel ? 1. : -1.;
           const V3     b0   = combine(u, uniform(-1.5, 1.5) * la, m, gap);
-          set(zero, combine(u, la, zero, 0.), b0, combine(u, sign * lb, zero, 0.));
+          set(zero,
+              combine(u, la, zero, 0.),
+              b0,
+              combine(u, sign * lb, zero, 0.));
           break;
         }
       case Kind::collinear_overlapping:
@@ -302,8 +313,8 @@ namespace
           const double phi  = std::pow(10., uniform(-12., -1.));
           const V3     w    = orthogonal(u, rng);
           const double sign = rng() % 2 ? 1. : -1.;
-          const V3     v    = combine(u, sign * std::cos(phi), w, std::sin(phi));
-          const V3     eb   = combine(v, lb, zero, 0.);
+          const V3     v  = combine(u, sign * std::cos(phi), w, std::sin(phi));
+          const V3     eb = combine(v, lb, zero, 0.);
           if (k == Kind::nearly_parallel)
             set(zero,
                 combine(u, la, zero, 0.),
@@ -337,13 +348,13 @@ namespace
   std::pair<std::array<double, 2>, bool>
   derivative_errors(const X &x, const F &f, const double h)
   {
-    using Inner = Sacado::Fad::SFad<double, 12>;
-    using Outer = Sacado::Fad::SFad<Inner, 12>;
-    const DistanceCase           c = classify_edge_edge(x);
-    std::array<Outer, 12>        y;
+    using Inner             = Sacado::Fad::SFad<double, 12>;
+    using Outer             = Sacado::Fad::SFad<Inner, 12>;
+    const DistanceCase    c = classify_edge_edge(x);
+    std::array<Outer, 12> y;
     for (unsigned int i = 0; i < 12; ++i)
       y[i] = Outer(12, i, Inner(12, i, x[i]));
-    const Outer e = f(c, y);
+    const Outer e    = f(c, y);
     const auto  same = [&](const DistanceCase &k) {
       return k.type == c.type && k.p == c.p;
     };
@@ -351,7 +362,7 @@ namespace
       std::array<Inner, 12> w;
       for (unsigned int i = 0; i < 12; ++i)
         w[i] = Inner(12, i, z[i]);
-      const Inner v = f(c, w);
+      const Inner            v = f(c, w);
       std::array<double, 12> g;
       for (unsigned int i = 0; i < 12; ++i)
         g[i] = v.dx(i);
@@ -371,7 +382,7 @@ namespace
             minus[i] -= step;
             smooth = smooth && same(classify_edge_edge(plus)) &&
                      same(classify_edge_edge(minus));
-            fd[r] = (f(c, plus) - f(c, minus)) / (2. * step);
+            fd[r]         = (f(c, plus) - f(c, minus)) / (2. * step);
             const auto gp = gradient(plus), gm = gradient(minus);
             for (unsigned int j = 0; j < 12; ++j)
               fd2[r][j] = (gp[j] - gm[j]) / (2. * step);
@@ -382,8 +393,8 @@ namespace
         for (unsigned int j = 0; j < 12; ++j)
           {
             const double hij = (4. * fd2[1][j] - fd2[0][j]) / 3.;
-            h_error = std::max(h_error, std::abs(hij - e.dx(i).dx(j)));
-            h_norm  = std::max(h_norm, std::abs(e.dx(i).dx(j)));
+            h_error          = std::max(h_error, std::abs(hij - e.dx(i).dx(j)));
+            h_norm           = std::max(h_norm, std::abs(e.dx(i).dx(j)));
           }
       }
     return {{{g_norm > 0. ? g_error / g_norm : g_error,
@@ -396,7 +407,7 @@ namespace
   {
     check.section("random edge pairs against brute force");
     std::mt19937       rng(43);
-    const unsigned int per_kind = 1000;
+    const unsigned int per_kind  = 1000;
     double             worst_all = 0., worst_fd_g = 0., worst_fd_h = 0.;
     double             worst_barrier_g = 0., worst_barrier_h = 0.;
     unsigned int       n_pairs = 0, n_smooth = 0, n_rough = 0;
@@ -424,9 +435,9 @@ namespace
               const double length = std::sqrt(std::max(la2, lb2));
               // Relative error; collinear overlapping (distance 0): of the
               // edge length.
-              const double error = kind == Kind::collinear_overlapping ?
-                                     std::abs(d - bf) / length :
-                                     std::abs(d - bf) / bf;
+              const double error = kind == Kind::collinear_overlapping
+                                     ? std::abs(d - bf) / length
+                                     : std::abs(d - bf) / bf;
               if (!(error <= worst))
                 {
                   worst = error;
@@ -451,7 +462,7 @@ namespace
                 ++n_line_line_small_angle;
               // Derivatives of d^2 and of the mollified barrier (d_hat
               // 2 d, eps_x = 1e-3 |ea|^2 |eb|^2), step 1e-4 d.
-              const double h    = 1e-4 * std::min(d, length);
+              const double h              = 1e-4 * std::min(d, length);
               const auto [errors, smooth] = derivative_errors(
                 x,
                 [](const DistanceCase &c, const auto &y) {
@@ -469,8 +480,8 @@ namespace
                   std::min(smallest_line_line_sine,
                            std::sqrt(edge_cross_square(x) / (la2 * lb2)));
               ++smooth_here;
-              worst_fd_g = std::max(worst_fd_g, errors[0]);
-              worst_fd_h = std::max(worst_fd_h, errors[1]);
+              worst_fd_g         = std::max(worst_fd_g, errors[0]);
+              worst_fd_h         = std::max(worst_fd_h, errors[1]);
               const double d_hat = 2. * d, eps_x = 1e-3 * la2 * lb2;
               const auto [barrier_errors, barrier_smooth] = derivative_errors(
                 x,
@@ -479,8 +490,7 @@ namespace
                   using std::log;
                   using std::sqrt;
                   const T dist = sqrt(squared_distance<3>(c, y));
-                  T       e    = -(dist - d_hat) * (dist - d_hat) *
-                        log(dist / d_hat);
+                  T e = -(dist - d_hat) * (dist - d_hat) * log(dist / d_hat);
                   const T cs = edge_cross_square(y);
                   if (cs < eps_x)
                     e = e * (2. - cs / eps_x) * cs / eps_x;
@@ -498,8 +508,8 @@ namespace
               const PairBarrier<12> b =
                 pair_barrier<3>(x, c, d_hat, 1., eps_x, 0);
               const double dist = std::sqrt(squared_distance<3>(c, x));
-              double       e = -(dist - d_hat) * (dist - d_hat) *
-                         std::log(dist / d_hat);
+              double       e =
+                -(dist - d_hat) * (dist - d_hat) * std::log(dist / d_hat);
               const double cs = edge_cross_square(x);
               if (cs < eps_x)
                 e = e * (2. - cs / eps_x) * cs / eps_x;
@@ -516,11 +526,14 @@ namespace
                              worst,
                              1e-12))
             check.note(worst_text);
-          check.note(std::to_string(smooth_here) +
-                     " of them away from case boundaries (derivatives checked)");
+          check.note(
+            std::to_string(smooth_here) +
+            " of them away from case boundaries (derivatives checked)");
         }
     check.at_least("random pairs checked", n_pairs, 10000);
-    check.at_most("all kinds: largest relative distance error", worst_all, 1e-12);
+    check.at_most("all kinds: largest relative distance error",
+                  worst_all,
+                  1e-12);
     check.note("line-line cases at |ea x eb|^2 < 1e-12 |ea|^2 |eb|^2: " +
                std::to_string(n_line_line_small_angle));
     check.section("derivatives against central differences (same case at "
@@ -589,11 +602,8 @@ namespace
       {
         const CollisionTime r = additive_ccd<3>(m.x, m.p, true, s, 1.);
         const double        T = m.d0 / m.v;
-        check.close(m.name + ": distance at the start",
-                    distance(m.x),
-                    m.d0,
-                    m.d0,
-                    1e-12);
+        check.close(
+          m.name + ": distance at the start", distance(m.x), m.d0, m.d0, 1e-12);
         check.at_most(m.name + ": step / (T - s d0 / v)",
                       r.t / (T - s * m.d0 / m.v),
                       1. + 1e-12);
@@ -608,8 +618,8 @@ namespace
     // nearly parallel pairs: the sampled distance on [0, t] stays >= s d0.
     std::mt19937                           rng(4343);
     std::uniform_real_distribution<double> u11(-1., 1.);
-    double       worst = 1e300, worst_end = 1e300;
-    unsigned int n = 0, limited = 0;
+    double                                 worst = 1e300, worst_end = 1e300;
+    unsigned int                           n = 0, limited = 0;
     for (const Kind kind : {Kind::parallel,
                             Kind::anti_parallel,
                             Kind::collinear_disjoint,
@@ -638,8 +648,8 @@ namespace
             limited += r.t < 1. ? 1 : 0;
             worst_end = std::min(worst_end, distance_at(x, p, r.t) / (s * d0));
             for (unsigned int k = 0; k <= 200; ++k)
-              worst = std::min(worst, distance_at(x, p, r.t * k / 200.) /
-                                        (s * d0));
+              worst =
+                std::min(worst, distance_at(x, p, r.t * k / 200.) / (s * d0));
           }
     check.at_least("random parallel motions checked", n, 400);
     check.at_least("random parallel motions limited by CCD", limited, 200);
@@ -664,7 +674,7 @@ namespace
     // quarter: the chords of equal angles are parallel and coplanar.
     double       smallest = 1e300, worst = 0.;
     const double r1 = 12., r2 = 12.02;
-    const int    n  = 40;
+    const int    n = 40;
     for (int k = 0; k < n; ++k)
       for (int j = std::max(k - 1, 0); j <= std::min(k + 1, n - 1); ++j)
         {
@@ -683,8 +693,8 @@ namespace
                           0.,
                           r2 * std::cos(s1)}};
           const double d = distance(x), bf = brute_force_distance(x);
-          smallest       = std::min(smallest, d);
-          worst          = std::max(worst, std::abs(d - bf) / bf);
+          smallest = std::min(smallest, d);
+          worst    = std::max(worst, std::abs(d - bf) / bf);
         }
     // The chords of equal angles: 0.02 cos(pi / 160).
     check.close("smallest chord distance against 0.02 cos(pi / 160)",
@@ -692,7 +702,9 @@ namespace
                 0.02 * std::cos(M_PI / 160.),
                 0.02,
                 1e-12);
-    check.at_most("chords: largest relative error vs brute force", worst, 1e-12);
+    check.at_most("chords: largest relative error vs brute force",
+                  worst,
+                  1e-12);
   }
 } // namespace
 
@@ -704,11 +716,10 @@ main()
   random_pairs(check);
   collision_detection(check);
   concentric_chords(check);
-  check.note(
-    "run time " +
-    std::to_string(std::chrono::duration<double>(
-                     std::chrono::steady_clock::now() - start)
-                     .count()) +
-    " s");
+  check.note("run time " +
+             std::to_string(std::chrono::duration<double>(
+                              std::chrono::steady_clock::now() - start)
+                              .count()) +
+             " s");
   return check.exit_code();
 }

@@ -75,13 +75,13 @@ namespace hyperelastic
           lower[d] = std::min(lower[d], v.X[d]);
           upper[d] = std::max(upper[d], v.X[d]);
         }
-    const double diagonal = lower.distance(upper);
+    const double  diagonal = lower.distance(upper);
     const Closest closest =
-      closest_pair(parameters.barrier_distance > 0. ?
-                     parameters.barrier_distance :
-                     2. * diagonal_barrier_distance(diagonal));
-    shared_settings = barrier_settings(
-      parameters, diagonal, moduli, dynamic, closest.distance);
+      closest_pair(parameters.barrier_distance > 0.
+                     ? parameters.barrier_distance
+                     : 2. * diagonal_barrier_distance(diagonal));
+    shared_settings =
+      barrier_settings(parameters, diagonal, moduli, dynamic, closest.distance);
     d_hat       = shared_settings.d_hat;
     kappa       = shared_settings.kappa;
     eps_setting = shared_settings.eps;

@@ -24,7 +24,7 @@ namespace hyperelastic
     /// d_hat: 'Barrier distance', or the smaller of 1e-3 of the body's
     /// bounding-box diagonal and half the smallest gap between non-adjacent
     /// boundary features in the reference configuration (self contact).
-    double d_hat = 0.;
+    double d_hat  = 0.;
     Origin origin = Origin::given;
     /// The smallest reference gap the automatic d_hat saw (+infinity if
     /// none within twice the diagonal's rule, or without self contact).
@@ -50,11 +50,12 @@ namespace hyperelastic
   /// reference configuration, measured by self contact up to twice
   /// diagonal_barrier_distance()), d_hat is at most half of it.
   BarrierSettings
-  barrier_settings(const ContactParameters &parameters,
-                   double                   diagonal,
-                   const LameParameters    &moduli,
-                   bool                     dynamic,
-                   double reference_gap = std::numeric_limits<double>::infinity());
+  barrier_settings(
+    const ContactParameters &parameters,
+    double                   diagonal,
+    const LameParameters    &moduli,
+    bool                     dynamic,
+    double reference_gap = std::numeric_limits<double>::infinity());
 
   /// "d_hat = <value> (<where it comes from>)" for the run header.
   std::string

@@ -135,16 +135,16 @@ namespace hyperelastic
     accurate_cross(const Vec<T, 3> &a, const Vec<T, 3> &b)
     {
       using std::sqrt;
-      const T          la = sqrt(dot<T, 3>(a, a)), lb = sqrt(dot<T, 3>(b, b));
-      Vec<T, 3>        sum, difference;
+      const T   la = sqrt(dot<T, 3>(a, a)), lb = sqrt(dot<T, 3>(b, b));
+      Vec<T, 3> sum, difference;
       for (int d = 0; d < 3; ++d)
         {
           const T u = a[d] / la, v = b[d] / lb;
           sum[d]        = u + v;
           difference[d] = v - u;
         }
-      Vec<T, 3>       c     = cross(sum, difference);
-      const T         scale = 0.5 * la * lb;
+      Vec<T, 3> c     = cross(sum, difference);
+      const T   scale = 0.5 * la * lb;
       for (int d = 0; d < 3; ++d)
         c[d] *= scale;
       return c;
@@ -302,8 +302,8 @@ namespace hyperelastic
                                         classify_point_segment<3>(x, 1, 2, 3),
                                         classify_point_segment<3>(x, 2, 0, 1),
                                         classify_point_segment<3>(x, 3, 0, 1)};
-    DistanceCase best = candidates[0];
-    double       end2 = squared_distance<3>(best, x);
+    DistanceCase       best          = candidates[0];
+    double             end2          = squared_distance<3>(best, x);
     for (unsigned int k = 1; k < 4; ++k)
       {
         const double d2 = squared_distance<3>(candidates[k], x);
