@@ -13,6 +13,16 @@
 //       (self pairs active, end gap below d_hat);
 //   hollow_ball DIM MESH a hollow disk (2D) or ball (3D) squashed by a plate
 //       until its inner surfaces meet: the same checks;
+//   concentric_shells MESH  two concentric hemispherical shells (a
+//       quarter), 0.02 apart, with parallel facing edges on the symmetry
+//       planes, the outer dented onto the inner (2 ranks): the reference
+//       check passes (it refused them, issue 43), the press completes free
+//       of intersections with contact_min_distance > 0 and the shells
+//       touch (self pairs active, gap below d_hat);
+//   automatic_barrier MESH  two blocks of one mesh 4e-4 apart, far below
+//       1e-3 of the diagonal, 'Barrier distance' automatic: d_hat is half
+//       the gap (1e-9), named so, and pressing them together completes
+//       free of intersections;
 //   friction DIM MESH    a unit block on a long block (one mesh, the lower
 //       one clamped), 'Self contact friction coefficient' = 0.5, gravity
 //       10, backward Euler: sliding at 2 it decelerates at mu g (2 %);
@@ -520,6 +530,93 @@ namespace
                   self.measure(problem->solution()).active_pairs,
                   0.);
   }
+
+  /// Two concentric hemispherical shells (a quarter; meshes/
+  /// concentric_shells_3d.msh), 0.02 apart, their arcs divided alike so
+  /// that facing edges on the symmetry planes and the rim are parallel
+  /// (issue 43: they were taken as 0 apart and the mesh refused). The inner
+  /// shell's inner face clamped, the outer shell's outer face dented
+  /// towards the centre around the pole (0.03 (z - 0.85) / 0.27 above
+  /// z = 0.85, held elsewhere), rollers on the symmetry planes, automatic
+  /// d_hat, 3 steps.
+  void
+  concentric_shells(Checker &checker, const std::string &mesh)
+  {
+    const std::string dent =
+      "-0.03*t*max(0, z - 0.85)/0.27/sqrt(x*x + y*y + z*z)";
+    const std::string scene =
+      common(3, mesh, 3) +
+      subsection("Linear solver", entry("Type", "direct")) +
+      subsection("Dirichlet 1",
+                 entry("Boundary id", "1") + entry("Components", "x, y, z") +
+                   entry("Displacement", "0; 0; 0")) +
+      subsection("Dirichlet 2",
+                 entry("Boundary id", "2") + entry("Components", "x, y, z") +
+                   entry("Displacement",
+                         "x*" + dent + "; y*" + dent + "; z*" + dent)) +
+      subsection("Dirichlet 3",
+                 entry("Boundary id", "3") + entry("Components", "x") +
+                   entry("Displacement", "0")) +
+      subsection("Dirichlet 4",
+                 entry("Boundary id", "4") + entry("Components", "y") +
+                   entry("Displacement", "0")) +
+      subsection("Contact", entry("Self contact", "true"));
+    Parameters parameters;
+    parameters.read_from_string(scene);
+    const auto problem = run_checked<3>(checker, "concentric shells", scene);
+    const SelfContact<3> self(parameters.contact,
+                              problem->get_dof_handler(),
+                              LameParameters());
+    const ContactMeasures end = self.measure(problem->solution());
+    checker.above("concentric shells: self pairs active at the end (the "
+                  "shells press on each other)",
+                  end.active_pairs,
+                  0.);
+    checker.below("concentric shells: smallest self-pair distance at the "
+                  "end / d_hat",
+                  end.min_distance / self.barrier_distance(),
+                  1.);
+    checker.note("concentric shells: d_hat = " +
+                 std::to_string(self.barrier_distance()) + ", " +
+                 std::to_string(end.active_pairs) +
+                 " active pairs at the end, smallest distance " +
+                 std::to_string(end.min_distance));
+  }
+
+  /// Two blocks of one mesh 4e-4 apart (meshes/close_blocks_2d.msh), far
+  /// below 1e-3 of the diagonal, 'Barrier distance' left automatic: d_hat
+  /// is half the gap (the diagonal's rule would refuse the mesh), and the
+  /// upper block pressed down by 1e-3 completes.
+  void
+  automatic_barrier(Checker &checker, const std::string &mesh)
+  {
+    const double      gap = 4e-4;
+    const std::string scene =
+      common(2, mesh, 3) +
+      subsection("Dirichlet 1",
+                 entry("Boundary id", "1") + entry("Components", "x, y") +
+                   entry("Displacement", "0; 0")) +
+      subsection("Dirichlet 2",
+                 entry("Boundary id", "2") + entry("Components", "x, y") +
+                   entry("Displacement", "0; -0.001*t")) +
+      subsection("Contact", entry("Self contact", "true"));
+    Parameters parameters;
+    parameters.read_from_string(scene);
+    const auto problem = run_checked<2>(checker, "close blocks", scene);
+    const SelfContact<2>   self(parameters.contact,
+                              problem->get_dof_handler(),
+                              LameParameters());
+    const BarrierSettings &b = self.settings();
+    checker.is_true("close blocks: d_hat from the reference gap",
+                    b.origin == BarrierSettings::Origin::reference_gap);
+    checker.close("close blocks: the smallest reference gap", b.reference_gap, gap, gap, 1e-9);
+    checker.close("close blocks: d_hat = half the gap", b.d_hat, 0.5 * gap, gap, 1e-9);
+    checker.below("close blocks: d_hat / (1e-3 diagonal)",
+                  b.d_hat / (1e-3 * std::sqrt(1. + (1. + gap) * (1. + gap))),
+                  1.);
+    checker.note("close blocks: header text '" + barrier_distance_text(b) +
+                 "'");
+  }
 } // namespace
 
 int
@@ -544,6 +641,10 @@ main(int argc, char **argv)
           else
             friction<3>(checker, argv[3]);
         }
+      else if (which == "automatic_barrier" && argc > 2)
+        automatic_barrier(checker, argv[2]);
+      else if (which == "concentric_shells" && argc > 2)
+        concentric_shells(checker, argv[2]);
       else if (which == "bent_bar" && argc > 2)
         bent_bar(checker, argv[2]);
       else if (which == "hollow_ball" && argc > 3)
@@ -555,7 +656,8 @@ main(int argc, char **argv)
         }
       else
         throw InputError("usage: self_contact two_blocks DIM MESH | bent_bar "
-                                 "MESH | hollow_ball DIM MESH | friction DIM MESH");
+                                 "MESH | hollow_ball DIM MESH | friction DIM MESH "
+                                 "| concentric_shells MESH | automatic_barrier MESH");
     },
     MPI_COMM_WORLD);
   return checker.exit_code(status);

@@ -35,9 +35,8 @@ namespace hyperelastic
       print_header(std::ostream &out) const override
       {
         if (obstacles)
-          out << "contact: " << n_obstacles
-              << " obstacle(s), barrier distance d_hat = "
-              << obstacles->barrier_distance()
+          out << "contact: " << n_obstacles << " obstacle(s), barrier distance "
+              << barrier_distance_text(obstacles->settings())
               << ", barrier stiffness kappa = "
               << obstacles->barrier_stiffness()
               << (obstacles->has_friction()
@@ -54,8 +53,8 @@ namespace hyperelastic
             if (dim == 3)
               out << ", " << size[2] << " edges";
             out << " (connectivity on every rank; positions exchanged with "
-                   "the ranks within reach), barrier distance d_hat = "
-                << self->barrier_distance()
+                   "the ranks within reach), barrier distance "
+                << barrier_distance_text(self->settings())
                 << ", barrier stiffness kappa = " << self->barrier_stiffness()
                 << std::endl;
           }
@@ -139,14 +138,10 @@ namespace hyperelastic
       elasticity.add_term(std::move(term));
       return added;
     };
-    ObstacleContact<dim> *obstacles = nullptr;
-    SelfContact<dim>     *self      = nullptr;
-    if (!parameters.obstacles.empty())
-      obstacles = add(std::make_unique<ObstacleContact<dim>>(parameters,
-                                                             setup.constants,
-                                                             setup.dof_handler,
-                                                             setup.moduli,
-                                                             setup.dynamic));
+    // Self contact first: its reference gaps may make the automatic d_hat
+    // smaller, and the obstacles take the same settings. (The operator
+    // holds the obstacles' term first.)
+    std::unique_ptr<SelfContact<dim>> self_term;
     if (parameters.self_contact)
       {
         if (setup.has_pressure_unknowns)
@@ -154,11 +149,23 @@ namespace hyperelastic
             "'Contact/Self contact = true' needs 'Problem/Formulation = "
             "displacement' (the mixed formulation's block preconditioner "
             "keeps the tangent's sparsity, which self-contact pairs grow)");
-        self = add(std::make_unique<SelfContact<dim>>(parameters,
-                                                      setup.dof_handler,
-                                                      setup.moduli,
-                                                      setup.dynamic));
+        self_term = std::make_unique<SelfContact<dim>>(parameters,
+                                                       setup.dof_handler,
+                                                       setup.moduli,
+                                                       setup.dynamic);
       }
+    ObstacleContact<dim> *obstacles = nullptr;
+    SelfContact<dim>     *self      = nullptr;
+    if (!parameters.obstacles.empty())
+      obstacles = add(std::make_unique<ObstacleContact<dim>>(
+        parameters,
+        setup.constants,
+        setup.dof_handler,
+        setup.moduli,
+        setup.dynamic,
+        self_term ? &self_term->settings() : nullptr));
+    if (self_term)
+      self = add(std::move(self_term));
     if (!obstacles && !self)
       return nullptr;
     return std::make_unique<ContactReport<dim>>(obstacles, self, setup);

@@ -22,7 +22,14 @@ namespace hyperelastic
       "d_hat of the barrier b(d) = -kappa (d - d_hat)^2 ln(d / d_hat), active "
       "for boundary vertices closer than d_hat to an obstacle. The converged "
       "gaps are of the order of d_hat: smaller is more accurate and needs "
-      "more Newton iterations. 0: 1e-3 of the mesh's bounding-box diagonal.");
+      "more Newton iterations. 0: automatic, 1e-3 of the mesh's "
+      "bounding-box diagonal; with 'Self contact = true' at most half the "
+      "smallest gap between boundary features that are not neighbours "
+      "(vertex and segment or triangle, two edges) in the reference "
+      "configuration, so that a mesh with close features starts outside "
+      "every barrier; the obstacles then take the same d_hat. The run "
+      "header says which rule chose it. A value given here that exceeds "
+      "such a gap is an input error.");
     prm.declare_entry(
       "Barrier stiffness",
       "0",

@@ -43,7 +43,8 @@ namespace hyperelastic
     const std::map<std::string, double> &constants,
     const DoFHandler<dim>               &dof_handler,
     const LameParameters                &moduli,
-    const bool                           dynamic)
+    const bool                           dynamic,
+    const BarrierSettings               *shared)
       : obstacles(parameters.obstacles)
       , comm(dof_handler.get_communicator())
       , dynamic(dynamic)
@@ -60,14 +61,13 @@ namespace hyperelastic
                              : nullptr);
       }
 
-    const BarrierSettings settings =
-      barrier_settings(parameters,
-                       std::sqrt(gather_vertices(dof_handler)),
-                       moduli,
-                       dynamic);
-    d_hat_value = settings.d_hat;
-    kappa       = settings.kappa;
-    eps_setting = settings.eps;
+    const double diagonal = std::sqrt(gather_vertices(dof_handler));
+    shared_settings =
+      shared ? *shared
+             : barrier_settings(parameters, diagonal, moduli, dynamic);
+    d_hat_value = shared_settings.d_hat;
+    kappa       = shared_settings.kappa;
+    eps_setting = shared_settings.eps;
 
     check_start();
   }

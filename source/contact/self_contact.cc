@@ -64,7 +64,9 @@ namespace hyperelastic
       , lagging(parameters.friction_lagging_updates)
   {
     build_faces(gather_vertices(dof_handler));
-    // d_hat and kappa as for the obstacles.
+    // d_hat and kappa as for the obstacles, the automatic d_hat at most
+    // half the smallest reference gap (within twice the diagonal's rule:
+    // larger gaps leave that rule).
     Point<dim> lower = vertices.empty() ? Point<dim>() : vertices[0].X,
                upper = lower;
     for (const Vertex &v : vertices)
@@ -73,13 +75,18 @@ namespace hyperelastic
           lower[d] = std::min(lower[d], v.X[d]);
           upper[d] = std::max(upper[d], v.X[d]);
         }
-    const BarrierSettings settings =
-      barrier_settings(parameters, lower.distance(upper), moduli, dynamic);
-    d_hat       = settings.d_hat;
-    kappa       = settings.kappa;
-    eps_setting = settings.eps;
+    const double  diagonal = lower.distance(upper);
+    const Closest closest =
+      closest_pair(parameters.barrier_distance > 0.
+                     ? parameters.barrier_distance
+                     : 2. * diagonal_barrier_distance(diagonal));
+    shared_settings =
+      barrier_settings(parameters, diagonal, moduli, dynamic, closest.distance);
+    d_hat       = shared_settings.d_hat;
+    kappa       = shared_settings.kappa;
+    eps_setting = shared_settings.eps;
 
-    check_start();
+    check_start(closest);
   }
 
   template <int dim>
@@ -199,28 +206,36 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
-  SelfContact<dim>::check_start() const
+  typename SelfContact<dim>::Closest
+  SelfContact<dim>::closest_pair(const double reach) const
   {
-    // The start: no two primitives within d_hat (their barrier would push
-    // them apart before any load).
     std::vector<Point<dim>> X(vertices.size());
     for (unsigned int k = 0; k < vertices.size(); ++k)
       X[k] = vertices[k].X;
-    double closest = std::numeric_limits<double>::infinity();
-    Pair   worst;
-    for (const Pair &pair : candidates(boxes(X, nullptr, d_hat)))
+    Closest c;
+    for (const Pair &pair : candidates(boxes(X, nullptr, reach)))
       {
         const Coordinates x = coordinates(pair, X);
         const double      d = std::sqrt(
           squared_distance<dim>(classify_pair<dim>(x, pair.edge_edge), x));
-        if (d < closest)
-          closest = d, worst = pair;
+        if (d < c.here)
+          c.here = d, c.pair = pair;
       }
+    c.distance = Utilities::MPI::min(c.here, comm);
+    return c;
+  }
+
+  template <int dim>
+  void
+  SelfContact<dim>::check_start(const Closest &closest) const
+  {
+    // The start: no two primitives within d_hat (their barrier would push
+    // them apart before any load).
+    const double global_closest = closest.distance;
+    const Pair  &worst          = closest.pair;
     // The closest pair's place, from the first rank that holds it.
-    const double global_closest = Utilities::MPI::min(closest, comm);
-    std::string  problem;
-    if (global_closest < d_hat && closest == global_closest)
+    std::string problem;
+    if (global_closest < d_hat && closest.here == global_closest)
       {
         std::ostringstream s;
         s << "'Contact/Self contact': boundary "
@@ -232,9 +247,13 @@ namespace hyperelastic
           << " apart in the reference configuration, closer than the "
              "barrier distance d_hat = "
           << d_hat
-          << " (they would repel each other before any load): set "
-             "'Contact/Barrier distance' below "
-          << global_closest << " or refine the mesh there";
+          << " (they would repel each other before any load): ";
+        if (global_closest > 0.)
+          s << "set 'Contact/Barrier distance' below " << global_closest
+            << " or refine the mesh there";
+        else
+          s << "they touch; no barrier distance separates them (separate "
+               "them in the mesh)";
         problem = s.str();
       }
     throw_input_error_of_first_rank(problem, comm);

@@ -1,18 +1,34 @@
 // The settings every contact term shares: the barrier distance d_hat, the
 // barrier stiffness kappa and friction's smoothing eps, from the scene's
-// 'Contact' entries or, where these are 0, from the body and the material.
+// 'Contact' entries or, where these are 0, from the body, its boundary's
+// reference gaps (self contact) and the material.
 #pragma once
 
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/materials/material.h>
 
+#include <limits>
+#include <string>
+
 namespace hyperelastic
 {
   struct BarrierSettings
   {
-    /// d_hat: 'Barrier distance', or 1e-3 of the body's bounding-box
-    /// diagonal.
-    double d_hat = 0.;
+    /// Where d_hat comes from.
+    enum class Origin
+    {
+      given,        ///< 'Barrier distance'
+      diagonal,     ///< 1e-3 of the body's bounding-box diagonal
+      reference_gap ///< half the smallest reference gap of the boundary
+    };
+    /// d_hat: 'Barrier distance', or the smaller of 1e-3 of the body's
+    /// bounding-box diagonal and half the smallest gap between non-adjacent
+    /// boundary features in the reference configuration (self contact).
+    double d_hat  = 0.;
+    Origin origin = Origin::given;
+    /// The smallest reference gap the automatic d_hat saw (+infinity if
+    /// none within twice the diagonal's rule, or without self contact).
+    double reference_gap = std::numeric_limits<double>::infinity();
     /// kappa: 'Barrier stiffness', or the P-wave modulus lambda + 2 mu over
     /// d_hat (a barrier as stiff as the material over its reach).
     double kappa = 0.;
@@ -22,11 +38,26 @@ namespace hyperelastic
     double eps = 0.;
   };
 
+  /// The automatic d_hat's rule for a body whose bounding box has the
+  /// diagonal @p diagonal: 1e-3 of it.
+  double
+  diagonal_barrier_distance(double diagonal);
+
   /// The settings for a body whose bounding box has the diagonal
-  /// @p diagonal, of a material with the small-strain @p moduli.
+  /// @p diagonal, of a material with the small-strain @p moduli; with
+  /// 'Barrier distance = 0' and a finite, positive @p reference_gap (the
+  /// smallest distance between non-adjacent boundary features in the
+  /// reference configuration, measured by self contact up to twice
+  /// diagonal_barrier_distance()), d_hat is at most half of it.
   BarrierSettings
-  barrier_settings(const ContactParameters &parameters,
-                   double                   diagonal,
-                   const LameParameters    &moduli,
-                   bool                     dynamic);
+  barrier_settings(
+    const ContactParameters &parameters,
+    double                   diagonal,
+    const LameParameters    &moduli,
+    bool                     dynamic,
+    double reference_gap = std::numeric_limits<double>::infinity());
+
+  /// "d_hat = <value> (<where it comes from>)" for the run header.
+  std::string
+  barrier_distance_text(const BarrierSettings &settings);
 } // namespace hyperelastic

@@ -39,6 +39,7 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <hyperelastic/base/timed_section.h>
+#include <hyperelastic/contact/barrier_settings.h>
 #include <hyperelastic/contact/contact_measures.h>
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/contact/end_state_map.h>
@@ -70,12 +71,15 @@ namespace hyperelastic
     /// side of an obstacle at t = 0 is an InputError naming the obstacle and
     /// the vertex. Collective.
     /// With @p dynamic, friction's slip is the step's (velocity times h)
-    /// and its smoothing eps_v h.
+    /// and its smoothing eps_v h. With @p shared (self contact's, which
+    /// may make the automatic d_hat smaller), d_hat, kappa and eps are
+    /// those.
     ObstacleContact(const ContactParameters             &parameters,
                     const std::map<std::string, double> &constants,
                     const dealii::DoFHandler<dim>       &dof_handler,
                     const LameParameters                &moduli,
-                    bool                                 dynamic = false);
+                    bool                                 dynamic = false,
+                    const BarrierSettings               *shared  = nullptr);
     ~ObstacleContact() override;
 
     std::string
@@ -145,6 +149,13 @@ namespace hyperelastic
     barrier_distance() const
     {
       return d_hat_value;
+    }
+
+    /// d_hat, kappa, eps and where d_hat comes from.
+    const BarrierSettings &
+    settings() const
+    {
+      return shared_settings;
     }
 
     double
@@ -293,6 +304,7 @@ namespace hyperelastic
     const MPI_Comm                                           comm;
     const bool                                               dynamic;
     std::vector<Vertex>                                      vertices;
+    BarrierSettings                                          shared_settings;
     double                                                   d_hat_value = 0.;
     double                                                   kappa       = 0.;
     /// eps (quasi-static) or eps_v (dynamics).

@@ -16,6 +16,14 @@
 // forward automatic differentiation (Sacado, nested twice for the Hessian).
 // Within a case the formulas are smooth; across cases the distance is C1.
 //
+// Parallel and nearly parallel edges: the lines' normal ea x eb is computed
+// without cancellation (accurate_cross), and the line-line case is taken
+// only where it is consistent with the endpoint cases (classify_edge_edge),
+// so that every pair's case gives the segments' true distance (to about
+// eps |x| / d relative) at any angle, parallel, anti-parallel and collinear
+// edges included; the feasible step (CCD) and the reference-configuration
+// check measure with the same cases.
+//
 // Edge-edge pairs of nearly parallel edges are mollified (IPC): with
 // c = |ea x eb|^2 and eps_x = 1e-3 |ea_rest|^2 |eb_rest|^2,
 //   m(c) = (2 - c / eps_x) c / eps_x  for c < eps_x, 1 beyond,
@@ -113,10 +121,51 @@ namespace hyperelastic
         }
     }
 
-    inline double
-    clamp01(const double s)
+    /// a x b without the cancellation of the plain formula for nearly
+    /// parallel (or anti-parallel) a, b: with u, v the unit vectors,
+    /// u x v = (u + v) x (v - u) / 2, where the small one of u + v and
+    /// v - u is a difference of nearly equal numbers, exact to its own
+    /// rounding, and the two factors are orthogonal. So the result is
+    /// accurate to a few ulps relative to |a x b| at any angle, where the
+    /// plain formula's error is about eps |a| |b| (relative eps / sin of
+    /// the angle), which ruins the line-line distance of nearly parallel
+    /// edges. NaN if a or b is zero.
+    template <typename T>
+    Vec<T, 3>
+    accurate_cross(const Vec<T, 3> &a, const Vec<T, 3> &b)
     {
-      return s < 0. ? 0. : (s > 1. ? 1. : s);
+      using std::sqrt;
+      const T   la = sqrt(dot<T, 3>(a, a)), lb = sqrt(dot<T, 3>(b, b));
+      Vec<T, 3> sum, difference;
+      for (int d = 0; d < 3; ++d)
+        {
+          const T u = a[d] / la, v = b[d] / lb;
+          sum[d]        = u + v;
+          difference[d] = v - u;
+        }
+      Vec<T, 3> c     = cross(sum, difference);
+      const T   scale = 0.5 * la * lb;
+      for (int d = 0; d < 3; ++d)
+        c[d] *= scale;
+      return c;
+    }
+
+    /// The parameters (s, t) of the closest points a0 + s ea, b0 + t eb of
+    /// two lines, from the normal n = ea x eb (accurate_cross):
+    /// s = (b0 - a0) . (eb x n) / |n|^2, t = (b0 - a0) . (ea x n) / |n|^2.
+    /// Their error is about eps |b0 - a0| / (|ea| sin angle), the lines'
+    /// own sensitivity; the 2 x 2 normal equations would square it.
+    inline std::array<double, 2>
+    line_line_parameters(const Vec<double, 3> &a0,
+                         const Vec<double, 3> &ea,
+                         const Vec<double, 3> &b0,
+                         const Vec<double, 3> &eb,
+                         const Vec<double, 3> &n)
+    {
+      const Vec<double, 3> w  = minus<double, 3>(b0, a0);
+      const double         nn = dot<double, 3>(n, n);
+      return {{dot<double, 3>(w, cross(eb, n)) / nn,
+               dot<double, 3>(w, cross(ea, n)) / nn}};
     }
   } // namespace primitive_geometry
 
@@ -151,11 +200,14 @@ namespace hyperelastic
               // (r . n)^2 / |n|^2 with n = u x v: point-plane r = a - b,
               // u, v the triangle's edges from b; line-line r = e - a, u, v
               // the lines' directions.
+              // The lines' normal by accurate_cross: the plain cross
+              // product's error, relative eps / sin of the angle, would
+              // enter the distance as eps |e - a| / (d sin angle).
               const Vec<T, 3> e = point<3>(x, c.p[2]), f = point<3>(x, c.p[3]);
               const bool      plane = c.type == DistanceCase::point_plane;
               const Vec<T, 3> normal =
                 plane ? cross(minus<T, 3>(e, b), minus<T, 3>(f, b))
-                      : cross(minus<T, 3>(b, a), minus<T, 3>(f, e));
+                      : accurate_cross(minus<T, 3>(b, a), minus<T, 3>(f, e));
               const T h =
                 dot<T, 3>(plane ? minus<T, 3>(a, b) : minus<T, 3>(e, a),
                           normal);
@@ -223,57 +275,60 @@ namespace hyperelastic
     return {DistanceCase::point_plane, {{0, 1, 2, 3}}};
   }
 
-  /// Edge [a0, a1] to edge [b0, b1] (3D): the closest points' parameters
-  /// (clamped to the segments) decide; parallel edges (|ea x eb|^2 below
-  /// 1e-20 |ea|^2 |eb|^2) take the closest endpoint-edge case.
+  /// Edge [a0, a1] to edge [b0, b1] (3D). The segments' distance is the
+  /// smallest of the four endpoint-to-edge distances unless the lines'
+  /// closest points lie inside both edges, where it is the lines' distance.
+  /// The line-line case is taken only if it is consistent:
+  ///  - the closest points' parameters (line_line_parameters, from the
+  ///    accurate normal) lie in (0, 1);
+  ///  - it is shorter than the best endpoint case by more than round-off
+  ///    (otherwise the endpoint case gives the same distance and stays
+  ///    well conditioned as the edges turn parallel);
+  ///  - d_end^2 - d_line^2 <= |ea x eb|^2 / min(|ea|^2, |eb|^2)
+  ///    (= L^2 sin^2 of the angle, L the longer edge). With the closest
+  ///    points inside both edges an endpoint lies within half the shorter
+  ///    edge of them, so its distance exceeds the lines' by at most a
+  ///    quarter of that. Parallel and nearly parallel edges whose
+  ///    parameters are round-off (exactly parallel edges have no closest
+  ///    points; the plain formulas gave any s, t) fail this test and keep
+  ///    the endpoint case, so the line-line case of two parallel coplanar
+  ///    edges can no longer give distance 0.
   inline DistanceCase
   classify_edge_edge(const std::array<double, 12> &x)
   {
     using namespace primitive_geometry;
-    const Vec<double, 3> a0 = point<3>(x, 0), a1 = point<3>(x, 1),
-                         b0 = point<3>(x, 2), b1 = point<3>(x, 3);
-    const Vec<double, 3> ea = minus<double, 3>(a1, a0),
-                         eb = minus<double, 3>(b1, b0),
-                         r  = minus<double, 3>(a0, b0);
-    const double aa = dot<double, 3>(ea, ea), bb = dot<double, 3>(eb, eb);
-    const double ab = dot<double, 3>(ea, eb), ar = dot<double, 3>(ea, r),
-                 br          = dot<double, 3>(eb, r);
-    const double denominator = aa * bb - ab * ab;
-    if (!(denominator > 1e-20 * aa * bb))
+    // The best of the endpoint-to-edge cases (point-line or point-point).
+    const DistanceCase candidates[4] = {classify_point_segment<3>(x, 0, 2, 3),
+                                        classify_point_segment<3>(x, 1, 2, 3),
+                                        classify_point_segment<3>(x, 2, 0, 1),
+                                        classify_point_segment<3>(x, 3, 0, 1)};
+    DistanceCase       best          = candidates[0];
+    double             end2          = squared_distance<3>(best, x);
+    for (unsigned int k = 1; k < 4; ++k)
       {
-        // Parallel: the smallest of the four endpoint-to-edge distances.
-        const DistanceCase candidates[4] = {
-          classify_point_segment<3>(x, 0, 2, 3),
-          classify_point_segment<3>(x, 1, 2, 3),
-          classify_point_segment<3>(x, 2, 0, 1),
-          classify_point_segment<3>(x, 3, 0, 1)};
-        DistanceCase best    = candidates[0];
-        double       closest = squared_distance<3>(best, x);
-        for (unsigned int k = 1; k < 4; ++k)
-          {
-            const double d2 = squared_distance<3>(candidates[k], x);
-            if (d2 < closest)
-              closest = d2, best = candidates[k];
-          }
-        return best;
+        const double d2 = squared_distance<3>(candidates[k], x);
+        if (d2 < end2)
+          end2 = d2, best = candidates[k];
       }
-    // Closest points a0 + s ea, b0 + t eb of the segments.
-    double s = primitive_geometry::clamp01((ab * br - bb * ar) / denominator);
-    double t = (ab * s + br) / bb;
-    if (t < 0.)
-      t = 0., s = primitive_geometry::clamp01(-ar / aa);
-    else if (t > 1.)
-      t = 1., s = primitive_geometry::clamp01((ab - ar) / aa);
-    const int      sa = s <= 0. ? 0 : (s >= 1. ? 1 : -1);
-    const int      tb = t <= 0. ? 0 : (t >= 1. ? 1 : -1);
-    const unsigned pa = sa, pb = 2 + tb;
-    if (sa < 0 && tb < 0)
-      return {DistanceCase::line_line, {{0, 1, 2, 3}}};
-    if (sa < 0)
-      return {DistanceCase::point_line, {{pb, 0, 1, 0}}};
-    if (tb < 0)
-      return {DistanceCase::point_line, {{pa, 2, 3, 0}}};
-    return {DistanceCase::point_point, {{pa, pb, 0, 0}}};
+    const Vec<double, 3> a0 = point<3>(x, 0), b0 = point<3>(x, 2);
+    const Vec<double, 3> ea = minus<double, 3>(point<3>(x, 1), a0),
+                         eb = minus<double, 3>(point<3>(x, 3), b0);
+    const Vec<double, 3> n  = accurate_cross(ea, eb);
+    const double         nn = dot<double, 3>(n, n);
+    if (!(nn > 0.))
+      return best; // parallel (or a degenerate edge)
+    const auto [s, t] = line_line_parameters(a0, ea, b0, eb, n);
+    if (!(s > 0. && s < 1. && t > 0. && t < 1.))
+      return best;
+    const DistanceCase line{DistanceCase::line_line, {{0, 1, 2, 3}}};
+    const double       line2 = squared_distance<3>(line, x);
+    // Round-off: a few ulps of the squared distances.
+    constexpr double same = 64. * std::numeric_limits<double>::epsilon();
+    const double     shorter =
+      std::min(dot<double, 3>(ea, ea), dot<double, 3>(eb, eb));
+    if (line2 < (1. - same) * end2 && end2 - line2 <= nn / shorter)
+      return line;
+    return best;
   }
 
   /// The closest-feature case of a pair of @p n_points points in @p dim
@@ -292,14 +347,17 @@ namespace hyperelastic
       return edge_edge ? classify_edge_edge(x) : classify_point_triangle(x);
   }
 
-  /// The edge-edge mollifier's c = |ea x eb|^2 at @p x (any number type).
+  /// The edge-edge mollifier's c = |ea x eb|^2 at @p x (any number type;
+  /// accurate_cross, so exactly 0 for exactly parallel edges).
   template <typename T>
   T
   edge_cross_square(const std::array<T, 12> &x)
   {
     using namespace primitive_geometry;
-    return cross_square<T, 3>(minus<T, 3>(point<3>(x, 1), point<3>(x, 0)),
-                              minus<T, 3>(point<3>(x, 3), point<3>(x, 2)));
+    const Vec<T, 3> n =
+      accurate_cross(minus<T, 3>(point<3>(x, 1), point<3>(x, 0)),
+                     minus<T, 3>(point<3>(x, 3), point<3>(x, 2)));
+    return dot<T, 3>(n, n);
   }
 
   /// A pair's barrier energy and its derivatives in the pair's coordinates.
@@ -443,11 +501,8 @@ namespace hyperelastic
             else
               {
                 // Closest points a + s u and e + t v of the two lines.
-                const Vec<double, 3> r  = minus<double, 3>(a, e);
-                const double         ru = dot<double, 3>(r, u),
-                             rv         = dot<double, 3>(r, v);
-                const double s          = (uv * rv - vv * ru) / det,
-                             t          = (uu * rv - uv * ru) / det;
+                const auto [s, t] =
+                  line_line_parameters(a, u, e, v, accurate_cross(u, v));
                 beta[c.p[0]] = 1. - s, beta[c.p[1]] = s,
                 beta[c.p[2]] = -(1. - t), beta[c.p[3]] = -t;
               }

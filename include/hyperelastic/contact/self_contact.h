@@ -49,6 +49,7 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <hyperelastic/base/timed_section.h>
+#include <hyperelastic/contact/barrier_settings.h>
 #include <hyperelastic/contact/contact_measures.h>
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/contact/end_state_map.h>
@@ -60,6 +61,7 @@
 #include <hyperelastic/materials/material.h>
 
 #include <array>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -76,7 +78,9 @@ namespace hyperelastic
   {
   public:
     /// Gathers the boundary (collective), sets d_hat and kappa as the
-    /// obstacles do and checks the start: boundary primitives closer than
+    /// obstacles do (the automatic d_hat at most half the smallest gap
+    /// between non-adjacent boundary features in the reference
+    /// configuration) and checks the start: boundary primitives closer than
     /// d_hat in the reference configuration are an InputError naming the
     /// place. With @p dynamic, friction's smoothing is a slip velocity.
     SelfContact(const ContactParameters       &parameters,
@@ -165,6 +169,14 @@ namespace hyperelastic
       return kappa;
     }
 
+    /// d_hat, kappa, eps and where d_hat comes from (the obstacles take
+    /// the same).
+    const BarrierSettings &
+    settings() const
+    {
+      return shared_settings;
+    }
+
     /// Boundary vertices, faces (segments in 2D) and edges (3D), global.
     std::array<unsigned int, 3>
     boundary_size() const
@@ -221,17 +233,30 @@ namespace hyperelastic
       double mollifier = 0.; ///< eps_x (edge-edge), 0 otherwise
     };
 
+    /// The closest pair of the reference configuration among the
+    /// candidates within a reach: its distance over all ranks (+infinity
+    /// if none), this rank's closest distance and pair.
+    struct Closest
+    {
+      double distance = std::numeric_limits<double>::infinity();
+      double here     = std::numeric_limits<double>::infinity();
+      Pair   pair;
+    };
+
     /// The set-up's steps: every rank's boundary vertices (numbered rank
     /// by rank; returns this rank's boundary faces as first dofs), the
-    /// faces and edges with their measures (collective), and the check that
-    /// no two primitives start within d_hat (an InputError naming the
-    /// place; collective).
+    /// faces and edges with their measures (collective), the closest
+    /// non-adjacent primitives of the reference configuration within
+    /// @p reach (collective), and the check that none start within d_hat
+    /// (an InputError naming the place; collective).
     std::vector<dealii::types::global_dof_index>
     gather_vertices(const dealii::DoFHandler<dim> &dof_handler);
     void
     build_faces(const std::vector<dealii::types::global_dof_index> &my_faces);
+    Closest
+    closest_pair(double reach) const;
     void
-    check_start() const;
+    check_start(const Closest &closest) const;
 
     /// The boxes of every vertex, face and edge, around the positions @p x
     /// (and x + @p p if given: the swept boxes) inflated by @p margin.
@@ -358,7 +383,8 @@ namespace hyperelastic
     /// The longest boundary edge in the reference configuration.
     double longest_edge = 0.;
 
-    double d_hat = 0., kappa = 0.;
+    BarrierSettings shared_settings;
+    double          d_hat = 0., kappa = 0.;
     /// The step's end-state map (set_end_state_map).
     EndStateMap end_state;
     /// The owned boundary vertices' positions at the step's start (the
