@@ -99,10 +99,9 @@ namespace
   std::string
   flat_surface_file()
   {
-    const std::string path =
-      (std::filesystem::current_path() /
-       ("turned_floor_" + std::to_string(dim) + "d.msh"))
-        .string();
+    const std::string path = (std::filesystem::current_path() /
+                              ("turned_floor_" + std::to_string(dim) + "d.msh"))
+                               .string();
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
         const std::array<double, 3> at = {{-1.03, 0.47, 2.01}};
@@ -122,18 +121,17 @@ namespace
             out << "9\n";
             for (unsigned int j = 0; j < 3; ++j)
               for (unsigned int i = 0; i < 3; ++i)
-                out << 3 * j + i + 1 << " " << at[i] << " " << at[j]
-                    << " 0\n";
+                out << 3 * j + i + 1 << " " << at[i] << " " << at[j] << " 0\n";
             out << "$EndNodes\n$Elements\n8\n";
             unsigned int e = 0;
             for (unsigned int j = 0; j < 2; ++j)
               for (unsigned int i = 0; i < 2; ++i)
                 {
                   const unsigned int a = 3 * j + i + 1;
-                  out << ++e << " 2 2 1 1 " << a << " " << a + 1 << " "
-                      << a + 4 << "\n";
-                  out << ++e << " 2 2 1 1 " << a << " " << a + 4 << " "
-                      << a + 3 << "\n";
+                  out << ++e << " 2 2 1 1 " << a << " " << a + 1 << " " << a + 4
+                      << "\n";
+                  out << ++e << " 2 2 1 1 " << a << " " << a + 4 << " " << a + 3
+                      << "\n";
                 }
           }
         out << "$EndElements\n";
@@ -148,26 +146,26 @@ namespace
   /// below the unit box's bottom, 0.01 to 0.11 from it.
   template <int dim>
   ObstacleParameters
-  turned(const ObstacleType   type,
-         const std::string   &angle,
-         const double         friction,
-         const std::string   &file = "")
+  turned(const ObstacleType type,
+         const std::string &angle,
+         const double       friction,
+         const std::string &file = "")
   {
     ObstacleParameters o;
-    o.number           = 1;
-    o.subsection       = "Contact/Obstacle 1";
-    o.type             = type;
-    o.point            = std::vector<double>(dim, 0.5);
-    o.point[dim - 1]   = -0.06;
-    o.normal           = std::vector<double>(dim, 0.);
-    o.normal[dim - 1]  = 1.;
-    o.motion           = std::vector<std::string>(dim, "0");
-    o.file             = file;
-    o.friction         = friction;
-    o.rotation_angle   = angle;
-    const auto axis    = fd_axis(dim);
-    o.rotation_axis    = dim == 2 ? std::vector<double>{axis[2]}
-                                  : std::vector<double>(axis.begin(), axis.end());
+    o.number          = 1;
+    o.subsection      = "Contact/Obstacle 1";
+    o.type            = type;
+    o.point           = std::vector<double>(dim, 0.5);
+    o.point[dim - 1]  = -0.06;
+    o.normal          = std::vector<double>(dim, 0.);
+    o.normal[dim - 1] = 1.;
+    o.motion          = std::vector<std::string>(dim, "0");
+    o.file            = file;
+    o.friction        = friction;
+    o.rotation_angle  = angle;
+    const auto axis   = fd_axis(dim);
+    o.rotation_axis   = dim == 2 ? std::vector<double>{axis[2]}
+                                 : std::vector<double>(axis.begin(), axis.end());
     return o;
   }
 
@@ -212,27 +210,25 @@ namespace
       ghosted = w;
       return ghosted;
     };
-    const auto g_at = [&](const ObstacleContact<dim> &c,
-                          const VectorType           &x,
-                          const double                t) {
-      VectorType g(box.owned, comm);
-      c.add_forces(x, t, g);
-      g.compress(dealii::VectorOperation::add);
-      return g;
-    };
+    const auto g_at =
+      [&](const ObstacleContact<dim> &c, const VectorType &x, const double t) {
+        VectorType g(box.owned, comm);
+        c.add_forces(x, t, g);
+        g.compress(dealii::VectorOperation::add);
+        return g;
+      };
     const auto contact_of = [&](const ObstacleParameters &o) {
       ContactParameters parameters;
       parameters.barrier_distance = 0.1;
       parameters.obstacles.push_back(o);
-      return std::make_unique<ObstacleContact<dim>>(parameters,
-                                                    std::map<std::string, double>(),
-                                                    box.dof_handler,
-                                                    moduli);
+      return std::make_unique<ObstacleContact<dim>>(
+        parameters, std::map<std::string, double>(), box.dof_handler, moduli);
     };
 
     // The turned plane and the same plane as a turned surface mesh.
     {
-      const auto plane = contact_of(turned<dim>(ObstacleType::plane, "0.1", 0.));
+      const auto plane =
+        contact_of(turned<dim>(ObstacleType::plane, "0.1", 0.));
       const auto mesh =
         contact_of(turned<dim>(ObstacleType::mesh, "0.1", 0., floor));
       ghosted = u;
@@ -251,22 +247,23 @@ namespace
         const std::string name =
           tag + (type == ObstacleType::plane ? "turned plane" : "turned mesh") +
           ", friction: ";
-        const auto contact = contact_of(
-          turned<dim>(type, "0.1 - 0.02*t", 0.5, floor));
+        const auto contact =
+          contact_of(turned<dim>(type, "0.1 - 0.02*t", 0.5, floor));
         VectorType u0(box.owned, comm);
         fill_random(u0, 1e-4, 3);
         ghosted = u0;
         contact->begin_step(ghosted, 0.);
         contact->prepare_motion(1.);
         contact->advance(1., 1.);
-        const double h = 1e-7;
-        ghosted        = u;
-        VectorType   g = g_at(*contact, ghosted, 1.);
+        const double h     = 1e-7;
+        ghosted            = u;
+        VectorType   g     = g_at(*contact, ghosted, 1.);
         const double slope = -(g * v);
         const double fd_slope =
           (contact->energy(at(u, h), 1.) - contact->energy(at(u, -h), 1.)) /
           (2. * h);
-        checker.close(name + "forces . v against (V(u + h v) - V(u - h v)) / 2h",
+        checker.close(name +
+                        "forces . v against (V(u + h v) - V(u - h v)) / 2h",
                       slope,
                       fd_slope,
                       std::abs(fd_slope),
@@ -277,7 +274,8 @@ namespace
         dealii::AffineConstraints<double> none;
         none.close();
         ghosted = u;
-        contact->add_stiffness(ghosted, 1., TangentProjection::none, none, K, rhs);
+        contact->add_stiffness(
+          ghosted, 1., TangentProjection::none, none, K, rhs);
         K.compress(dealii::VectorOperation::add);
         VectorType Kv(box.owned, comm);
         K.vmult(Kv, v);
@@ -311,14 +309,15 @@ namespace
         const VectorType g0 = g_at(*contact, ghosted, 0.);
         const double     e0 = contact->energy(ghosted, 0.);
         VectorType       carried(box.owned, comm);
-        for_each_vertex(box, [&](const auto &dofs, const dealii::Point<dim> &X) {
-          dealii::Tensor<1, dim> x = X - pivot;
-          for (unsigned int d = 0; d < dim; ++d)
-            x[d] += u(dofs[d]);
-          const dealii::Tensor<1, dim> y = Q * x;
-          for (unsigned int d = 0; d < dim; ++d)
-            carried(dofs[d]) = y[d] + pivot[d] - X[d];
-        });
+        for_each_vertex(box,
+                        [&](const auto &dofs, const dealii::Point<dim> &X) {
+                          dealii::Tensor<1, dim> x = X - pivot;
+                          for (unsigned int d = 0; d < dim; ++d)
+                            x[d] += u(dofs[d]);
+                          const dealii::Tensor<1, dim> y = Q * x;
+                          for (unsigned int d = 0; d < dim; ++d)
+                            carried(dofs[d]) = y[d] + pivot[d] - X[d];
+                        });
         carried.compress(dealii::VectorOperation::insert);
         contact->prepare_motion(1.);
         contact->advance(1., 1.);
@@ -355,7 +354,8 @@ namespace
     for (const ObstacleType type : {ObstacleType::plane, ObstacleType::mesh})
       {
         const std::string name =
-          tag + (type == ObstacleType::plane ? "turning plane" : "turning mesh") +
+          tag +
+          (type == ObstacleType::plane ? "turning plane" : "turning mesh") +
           ": ";
         const auto contact =
           contact_of(turned<dim>(type, "0.1 + 0.3*t", 0., floor));
@@ -458,7 +458,7 @@ namespace
     {
       const double theta   = 20. * M_PI / 180.;
       const auto   problem = run_scene<dim>(tilting_table<dim>(theta, 0.8));
-      double fastest = 0., slip = 0.;
+      double       fastest = 0., slip = 0.;
       for (const auto &row : problem->summaries())
         if (row.load_factor > 0.6 + 1e-9)
           {
@@ -478,9 +478,9 @@ namespace
       // 0.49505 below the axis, is where the table's rotation took it,
       // within the creep eps_v t = 0.004 and the block's elastic
       // compression under its weight (1e-3 of its height).
-      const auto  &last   = problem->summaries().back();
-      const double ux     = column(last, "point1_ux"),
-                   uy     = column(last, dim == 3 ? "point1_uz" : "point1_uy");
+      const auto  &last    = problem->summaries().back();
+      const double ux      = column(last, "point1_ux"),
+                   uy      = column(last, dim == 3 ? "point1_uz" : "point1_uy");
       const double rigid_x = -0.49505 * std::sin(theta),
                    rigid_y = 0.49505 * (1. - std::cos(theta));
       checker.at_most(tag + "20 degrees: |bottom centre - the table's "
@@ -500,9 +500,10 @@ namespace
       const double a =
         (along(at_time(s, 0.8), theta) - along(at_time(s, 0.6), theta)) / 0.2;
       const double exact = g * (std::sin(theta) - mu * std::cos(theta));
-      checker.close(tag + "35 degrees (tan > mu): acceleration along the "
-                          "table over t in [0.6, 0.8] against g (sin - mu "
-                          "cos) = " +
+      checker.close(tag +
+                      "35 degrees (tan > mu): acceleration along the "
+                      "table over t in [0.6, 0.8] against g (sin - mu "
+                      "cos) = " +
                       number(exact),
                     a,
                     exact,
@@ -542,26 +543,27 @@ namespace
                               "0.5, 0.5, 0.5; -0.5, 0.5, 0.5; -0.5, -0.5, "
                               "0.5; 0.5, -0.5, 0.5; 0.5, 0, 0.5; 0, 0.5, 0.5; "
                               "0.25, 0.25, 0.5; -0.25, 0, 0.5")) +
-           subsection(
-             "Contact",
-             entry("Barrier distance", "0.002") +
-               entry("Friction smoothing", number(eps)) +
-               subsection(
-                 "Obstacle 1",
-                 entry("Type", "plane") + entry("Point", "0, 0, 0.501") +
-                   entry("Normal", "0, 0, -1") +
-                   entry("Motion", "0; 0; -0.05*(t < 0.5 ? 2*t : 1)") +
-                   entry("Rotation axis", "0, 0, 1") +
-                   entry("Rotation angle", "phi*(t < 0.5 ? 0 : 2*t - 1)") +
-                   entry("Friction coefficient", "1")));
+           subsection("Contact",
+                      entry("Barrier distance", "0.002") +
+                        entry("Friction smoothing", number(eps)) +
+                        subsection("Obstacle 1",
+                                   entry("Type", "plane") +
+                                     entry("Point", "0, 0, 0.501") +
+                                     entry("Normal", "0, 0, -1") +
+                                     entry("Motion",
+                                           "0; 0; -0.05*(t < 0.5 ? 2*t : 1)") +
+                                     entry("Rotation axis", "0, 0, 1") +
+                                     entry("Rotation angle",
+                                           "phi*(t < 0.5 ? 0 : 2*t - 1)") +
+                                     entry("Friction coefficient", "1")));
   }
 
   void
   rotating_plate(Checker &checker)
   {
     const double phi = 3. * M_PI / 180., eps = 1e-4;
-    const auto   problem = run_scene<3>(rotating_plate(phi, eps));
-    const auto  &s       = problem->summaries();
+    const auto   problem       = run_scene<3>(rotating_plate(phi, eps));
+    const auto  &s             = problem->summaries();
     unsigned int turning_steps = 0;
     for (const auto &row : s)
       turning_steps += row.load_factor > 0.5 + 1e-9 ? 1 : 0;
@@ -578,18 +580,20 @@ namespace
     double       worst = 0., least_turn = 1e300;
     for (unsigned int k = 0; k < points.size(); ++k)
       {
-        const std::string p = "point" + std::to_string(k + 1) + "_u";
+        const std::string p  = "point" + std::to_string(k + 1) + "_u";
         const double      xa = points[k][0] + column(pressed, p + "x"),
                      ya      = points[k][1] + column(pressed, p + "y");
-        const double xb = points[k][0] + column(turned, p + "x"),
-                     yb = points[k][1] + column(turned, p + "y");
+        const double xb      = points[k][0] + column(turned, p + "x"),
+                     yb      = points[k][1] + column(turned, p + "y");
         // The plate's rotation of the vertex's place when the turn began.
         const double xe = c * xa - sn * ya, ye = sn * xa + c * ya;
         worst      = std::max(worst, std::hypot(xb - xe, yb - ye));
         least_turn = std::min(least_turn, std::hypot(xe - xa, ye - ya));
       }
     const double bound = turning_steps * eps;
-    checker.at_least("rotating plate: load steps of the turn", turning_steps, 10);
+    checker.at_least("rotating plate: load steps of the turn",
+                     turning_steps,
+                     10);
     checker.at_most("rotating plate: largest |top vertex - plate's rotation "
                     "of it| / (eps x steps of the turn = " +
                       number(bound) + ")",

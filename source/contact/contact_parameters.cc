@@ -250,9 +250,7 @@ namespace hyperelastic
           return;
         }
       if (a.size() != 3)
-        reject(entry,
-               text,
-               "needs 3 values (the axis; all zero: no rotation)");
+        reject(entry, text, "needs 3 values (the axis; all zero: no rotation)");
       const double norm = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
       for (double &v : a)
         v /= norm;

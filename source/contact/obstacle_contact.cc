@@ -96,12 +96,12 @@ namespace hyperelastic
         motions.push_back(parse_vector_function<dim>(o.motion,
                                                      constants,
                                                      o.subsection + "/Motion"));
-        angles.push_back(o.rotation_axis.empty()
-                           ? nullptr
-                           : parse_vector_function<dim>(
-                               {o.rotation_angle},
-                               constants,
-                               o.subsection + "/Rotation angle"));
+        angles.push_back(
+          o.rotation_axis.empty()
+            ? nullptr
+            : parse_vector_function<dim>({o.rotation_angle},
+                                         constants,
+                                         o.subsection + "/Rotation angle"));
         surfaces.push_back(o.type == ObstacleType::mesh
                              ? std::make_shared<const ObstacleSurface<dim>>(
                                  o.file, o.subsection + "/File")
@@ -296,11 +296,11 @@ namespace hyperelastic
       {
         // In the surface's coordinates Q^T (x - p); grad = Q grad_s,
         // Hessian Q H_s Q^T.
-        const double d = o.surface->distance(
-          Point<dim>(transpose(o.rotation) * (x - o.point)),
-          reach,
-          gradient,
-          hessian);
+        const double d =
+          o.surface->distance(Point<dim>(transpose(o.rotation) * (x - o.point)),
+                              reach,
+                              gradient,
+                              hessian);
         if (gradient)
           *gradient = o.rotation * *gradient;
         if (hessian)
@@ -542,8 +542,7 @@ namespace hyperelastic
         if (!moving)
           return;
         const Tensor<1, dim> pull =
-          p.stiffness * carried(now[k], end[k], position(a, u)) /
-          end_state.c;
+          p.stiffness * carried(now[k], end[k], position(a, u)) / end_state.c;
         for (unsigned int i = 0; i < dim; ++i)
           if (pull[i] != 0. && !constraints.is_constrained(dofs[i]))
             {
@@ -602,16 +601,16 @@ namespace hyperelastic
               {
                 const double keep = 1. - feasible_fraction;
                 if (!now[k].turns)
-                  alpha = std::min(alpha,
-                                   now[k].surface->largest_step(
-                                     Point<dim>(offset), p, keep));
-                else if (turn == 0.)
                   alpha = std::min(
                     alpha,
-                    now[k].surface->largest_step(
-                      Point<dim>(transpose(now[k].rotation) * offset),
-                      transpose(now[k].rotation) * p,
-                      keep));
+                    now[k].surface->largest_step(Point<dim>(offset), p, keep));
+                else if (turn == 0.)
+                  alpha =
+                    std::min(alpha,
+                             now[k].surface->largest_step(
+                               Point<dim>(transpose(now[k].rotation) * offset),
+                               transpose(now[k].rotation) * p,
+                               keep));
                 else
                   {
                     // In the surface's coordinates Q(s)^T (x(s) - p(s)),
@@ -621,16 +620,17 @@ namespace hyperelastic
                     const double         speed =
                       p.norm() + std::abs(turn) * (across(axis, offset).norm() +
                                                    across(axis, p).norm());
-                    alpha = std::min(
-                      alpha,
-                      now[k].surface->largest_step_along(
-                        [&](const double s) {
-                          return Point<dim>(
-                            back * (rotation_about<dim>(axis, -s * turn) *
-                                    (offset + s * p)));
-                        },
-                        speed,
-                        keep));
+                    alpha =
+                      std::min(alpha,
+                               now[k].surface->largest_step_along(
+                                 [&](const double s) {
+                                   return Point<dim>(
+                                     back *
+                                     (rotation_about<dim>(axis, -s * turn) *
+                                      (offset + s * p)));
+                                 },
+                                 speed,
+                                 keep));
                   }
                 continue;
               }

@@ -37,9 +37,9 @@
 // coordinates Q^T (x - p - m) (the gradient and Hessian turned back),
 // found through its R-tree, its feasible step by conservative advancement.
 // Within a step an obstacle's way is taken as linear in m and in the angle
-// between the obstacle times (exact for motions linear in t). Every rank handles the
-// boundary vertices whose dofs it owns (P2: the vertices only, not the
-// mid-edge nodes); the answer does not depend on the number of ranks.
+// between the obstacle times (exact for motions linear in t). Every rank
+// handles the boundary vertices whose dofs it owns (P2: the vertices only, not
+// the mid-edge nodes); the answer does not depend on the number of ranks.
 #pragma once
 
 #include <deal.II/base/function.h>
@@ -318,7 +318,7 @@ namespace hyperelastic
     std::vector<std::shared_ptr<const ObstacleSurface<dim>>> surfaces;
     std::vector<std::unique_ptr<dealii::Function<dim>>>      motions;
     /// The rotation angles (null for obstacles that do not turn).
-    std::vector<std::unique_ptr<dealii::Function<dim>>> angles;
+    std::vector<std::unique_ptr<dealii::Function<dim>>>      angles;
     const MPI_Comm                                           comm;
     const bool                                               dynamic;
     std::vector<Vertex>                                      vertices;

@@ -62,10 +62,9 @@ namespace hyperelastic
     /// |path'(s)| is at most @p speed (a point moving relative to a
     /// turning surface, given in the surface's coordinates).
     double
-    largest_step_along(
-      const std::function<dealii::Point<dim>(double)> &path,
-      double                                           speed,
-      double                                           keep) const;
+    largest_step_along(const std::function<dealii::Point<dim>(double)> &path,
+                       double                                           speed,
+                       double keep) const;
 
     unsigned int
     n_elements() const
