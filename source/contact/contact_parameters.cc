@@ -111,6 +111,26 @@ namespace hyperelastic
                           "Displacement of the whole obstacle, one expression "
                           "of t per axis separated by ';' (t: the load factor "
                           "or the time); the Loading constants may be used.");
+        prm.declare_entry(
+          "Rotation axis",
+          "0, 0, 0",
+          List(Double()),
+          "The axis the obstacle turns about (right-handed, normalised here), "
+          "through its Point displaced by Motion: an obstacle point X of the "
+          "placement the entries describe is at p + m(t) + Q(t) (X - p), p "
+          "the Point, m the Motion and Q(t) the rotation by 'Rotation angle' "
+          "about this axis. Zero: no rotation. 2D: the out-of-plane axis, "
+          "'0, 0, 1' (or '1': counter-clockwise for a positive angle) or "
+          "'0, 0, -1' (or '-1'). A plane's normal turns with it, a meshed "
+          "surface turns about its Point; a sphere turns about its centre "
+          "(only its friction feels it).");
+        prm.declare_entry(
+          "Rotation angle",
+          "0",
+          Anything(),
+          "The rotation angle in radians about 'Rotation axis', an expression "
+          "of t (the load factor or the time; the Loading constants and pi "
+          "may be used). Anything but 0 needs a non-zero axis.");
         prm.declare_entry("Friction coefficient",
                           "0",
                           Double(0.),
@@ -159,6 +179,10 @@ namespace hyperelastic
         o.radius   = get_finite(prm, o.subsection, "Radius");
         o.file     = prm.get("File");
         o.motion   = split_expressions(prm.get("Motion"));
+        const std::string axis_text = prm.get("Rotation axis");
+        for (const auto &v : dealii::Utilities::split_string_list(axis_text))
+          o.rotation_axis.push_back(dealii::Utilities::string_to_double(v));
+        o.rotation_angle = dealii::Utilities::trim(prm.get("Rotation angle"));
         o.friction = get_finite(prm, o.subsection, "Friction coefficient");
         prm.leave_subsection();
         if (o.type == ObstacleType::none)
@@ -173,6 +197,29 @@ namespace hyperelastic
             if (o.file[0] != '/')
               o.file = scene_folder + "/" + o.file;
           }
+        if (o.rotation_angle.empty())
+          reject(o.subsection + "/Rotation angle",
+                 "",
+                 "needs an expression of t (0: no rotation)");
+        double axis_length = 0.;
+        for (const double a : o.rotation_axis)
+          {
+            if (!std::isfinite(a))
+              reject(o.subsection + "/Rotation axis",
+                     axis_text,
+                     "must be finite");
+            axis_length += a * a;
+          }
+        if (!(axis_length > 0.))
+          {
+            if (o.rotation_angle != "0")
+              reject(o.subsection + "/Rotation axis",
+                     axis_text,
+                     "must not be zero with 'Rotation angle' = '" +
+                       o.rotation_angle +
+                       "' (the axis the obstacle turns about)");
+            o.rotation_axis.clear();
+          }
         if (o.type == ObstacleType::sphere && !(o.radius > 0.))
           reject(o.subsection + "/Radius",
                  std::to_string(o.radius),
@@ -181,6 +228,41 @@ namespace hyperelastic
       }
     prm.leave_subsection();
   }
+
+  namespace
+  {
+    /// 3D: three components, normalised. 2D: the out-of-plane axis, given
+    /// as one value or as three with the first two zero; kept as its sign.
+    void
+    check_rotation_axis(ObstacleParameters &o, const unsigned int dim)
+    {
+      std::vector<double> &a = o.rotation_axis;
+      if (a.empty())
+        return;
+      std::string text;
+      for (const double v : a)
+        text += (text.empty() ? "" : ", ") + dealii::Utilities::to_string(v);
+      const std::string entry = o.subsection + "/Rotation axis";
+      if (dim == 2)
+        {
+          if (a.size() == 3 && a[0] == 0. && a[1] == 0.)
+            a = {a[2]};
+          if (a.size() != 1)
+            reject(entry,
+                   text,
+                   "a 2D obstacle turns about the out-of-plane axis: "
+                   "'0, 0, 1' (or '1': counter-clockwise for a positive "
+                   "angle) or '0, 0, -1' (or '-1')");
+          a[0] = a[0] > 0. ? 1. : -1.;
+          return;
+        }
+      if (a.size() != 3)
+        reject(entry, text, "needs 3 values (the axis; all zero: no rotation)");
+      const double norm = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+      for (double &v : a)
+        v /= norm;
+    }
+  } // namespace
 
   void
   ContactParameters::check(const unsigned int dim)
@@ -206,6 +288,7 @@ namespace hyperelastic
                  std::to_string(o.motion.size()) + " expressions",
                  "needs " + std::to_string(dim) +
                    " expressions separated by ';'");
+        check_rotation_axis(o, dim);
         if (o.type != ObstacleType::plane)
           continue;
         fit(o.normal, o.subsection + "/Normal");

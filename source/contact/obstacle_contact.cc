@@ -35,6 +35,48 @@ namespace hyperelastic
         p[d] = values[d];
       return p;
     }
+
+    /// The rotation by @p angle about @p axis (a unit vector; 2D: its z
+    /// component, +1 or -1, the out-of-plane axis), right-handed.
+    template <int dim>
+    Tensor<2, dim>
+    rotation_about(const Tensor<1, 3> &axis, const double angle)
+    {
+      const double   c = std::cos(angle), s = std::sin(angle);
+      Tensor<2, dim> Q;
+      if constexpr (dim == 2)
+        {
+          Q[0][0] = c;
+          Q[0][1] = -axis[2] * s;
+          Q[1][0] = axis[2] * s;
+          Q[1][1] = c;
+        }
+      else
+        {
+          // Rodrigues: c I + s [a]x + (1 - c) a a^T.
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              Q[i][j] = (i == j ? c : 0.) + (1. - c) * axis[i] * axis[j];
+          Q[0][1] -= s * axis[2];
+          Q[0][2] += s * axis[1];
+          Q[1][0] += s * axis[2];
+          Q[1][2] -= s * axis[0];
+          Q[2][0] -= s * axis[1];
+          Q[2][1] += s * axis[0];
+        }
+      return Q;
+    }
+
+    /// The part of @p v across @p axis (2D: all of it).
+    template <int dim>
+    Tensor<1, dim>
+    across(const Tensor<1, 3> &axis, const Tensor<1, dim> &v)
+    {
+      Tensor<1, dim> result = v;
+      if constexpr (dim == 3)
+        result -= (axis * v) * axis;
+      return result;
+    }
   } // namespace
 
   template <int dim>
@@ -55,6 +97,12 @@ namespace hyperelastic
         motions.push_back(parse_vector_function<dim>(o.motion,
                                                      constants,
                                                      o.subsection + "/Motion"));
+        angles.push_back(
+          o.rotation_axis.empty()
+            ? nullptr
+            : parse_vector_function<dim>({o.rotation_angle},
+                                         constants,
+                                         o.subsection + "/Rotation angle"));
         surfaces.push_back(o.type == ObstacleType::mesh
                              ? std::make_shared<const ObstacleSurface<dim>>(
                                  o.file, o.subsection + "/File")
@@ -194,6 +242,10 @@ namespace hyperelastic
         w[d] = motions[k]->value(Point<dim>(), d);
       return w;
     };
+    const auto angle = [&](const unsigned int k, const double t) {
+      angles[k]->set_time(t);
+      return angles[k]->value(Point<dim>(), 0);
+    };
     for (unsigned int k = 0; k < obstacles.size(); ++k)
       {
         const ObstacleParameters &o = obstacles[k];
@@ -201,13 +253,33 @@ namespace hyperelastic
         const Tensor<1, dim>      w = offset(k, time);
         p.type                      = o.type;
         p.point                     = to_point<dim>(o.point) + w;
+        p.rotation                  = unit_symmetric_tensor<dim>();
+        p.turn                      = p.rotation;
+        p.turns                     = angles[k] != nullptr;
+        if (p.turns)
+          {
+            for (unsigned int d = 0; d < o.rotation_axis.size(); ++d)
+              p.axis[3 - o.rotation_axis.size() + d] = o.rotation_axis[d];
+            p.angle    = angle(k, time);
+            p.rotation = rotation_about<dim>(p.axis, p.angle);
+          }
         if (o.type == ObstacleType::plane)
-          p.normal = to_point<dim>(o.normal);
+          p.normal = p.turns ? p.rotation * to_point<dim>(o.normal)
+                             : Tensor<1, dim>(to_point<dim>(o.normal));
         p.radius   = o.radius;
         p.friction = o.friction;
         p.surface  = surfaces[k].get();
         if (std::isfinite(reached) && o.friction > 0.)
-          p.shift = w - offset(k, step_start);
+          {
+            const Tensor<1, dim> w_start = offset(k, step_start);
+            p.shift                      = w - w_start;
+            if (p.turns)
+              {
+                p.start_point = to_point<dim>(o.point) + w_start;
+                p.turn =
+                  rotation_about<dim>(p.axis, p.angle - angle(k, step_start));
+              }
+          }
       }
     return result;
   }
@@ -220,6 +292,21 @@ namespace hyperelastic
                                  Tensor<1, dim>   *gradient,
                                  Tensor<2, dim>   *hessian)
   {
+    if (o.type == ObstacleType::mesh && o.turns)
+      {
+        // In the surface's coordinates Q^T (x - p); grad = Q grad_s,
+        // Hessian Q H_s Q^T.
+        const double d =
+          o.surface->distance(Point<dim>(transpose(o.rotation) * (x - o.point)),
+                              reach,
+                              gradient,
+                              hessian);
+        if (gradient)
+          *gradient = o.rotation * *gradient;
+        if (hessian)
+          *hessian = o.rotation * *hessian * transpose(o.rotation);
+        return d;
+      }
     if (o.type == ObstacleType::mesh)
       return o.surface->distance(Point<dim>(x - o.point),
                                  reach,
@@ -243,6 +330,20 @@ namespace hyperelastic
     if (hessian)
       *hessian = (unit_symmetric_tensor<dim>() - outer_product(e, e)) / r;
     return r - o.radius;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ObstacleContact<dim>::carried(const Placed     &from,
+                                const Placed     &to,
+                                const Point<dim> &x)
+  {
+    Tensor<1, dim> w = to.point - from.point;
+    if (to.angle != from.angle)
+      w += (rotation_about<dim>(to.axis, to.angle - from.angle) -
+            unit_symmetric_tensor<dim>()) *
+           (x - from.point);
+    return w;
   }
 
   template <int dim>
@@ -305,9 +406,14 @@ namespace hyperelastic
     if (!(l.normal_force > 0.))
       return state;
     // The slip of the step relative to the obstacle, in the lagged tangent
-    // plane.
+    // plane: the obstacle's point under the vertex's start has moved by
+    // the shift and, turning, by (turn - I) (x_start - its start point).
+    Tensor<1, dim> w = o.shift;
+    if (o.turns)
+      w += (o.turn - unit_symmetric_tensor<dim>()) *
+           (start_positions[a] - o.start_point);
     const Tensor<1, dim> s =
-      l.tangent_projection * (x - start_positions[a] - o.shift);
+      l.tangent_projection * (x - start_positions[a] - w);
     const SmoothedFriction f  = smoothed_friction(s.norm(), eps);
     const double           ml = o.friction * l.normal_force;
     state.energy += ml * f.f0;
@@ -400,16 +506,16 @@ namespace hyperelastic
   {
     const auto scope = timed_section(timer, "contact");
     // While the obstacles are on their way (Placed at obstacle_time(t)),
-    // the linearization carries the rest of their motion w_k: the pair's
-    // forces depend on x - w, so the right-hand side gains K w on the
-    // pair's rows (the obstacle drags the vertices it touches).
-    std::vector<Tensor<1, dim>> rest(obstacles.size());
-    if (reached < end_time(t))
+    // the linearization carries the rest of their motion w_ak (of the
+    // obstacle's point at vertex a): the pair's forces depend on x - w, so
+    // the right-hand side gains K w on the pair's rows (the obstacle drags
+    // the vertices it touches).
+    const bool          moving = reached < end_time(t);
+    std::vector<Placed> now, end;
+    if (moving)
       {
-        const std::vector<Placed> now = placed(reached),
-                                  end = placed(end_time(t));
-        for (unsigned int k = 0; k < obstacles.size(); ++k)
-          rest[k] = end[k].point - now[k].point;
+        now = placed(reached);
+        end = placed(end_time(t));
       }
     FullMatrix<double>                   block(dim, dim);
     std::vector<types::global_dof_index> dofs(dim);
@@ -433,7 +539,10 @@ namespace hyperelastic
           }
         add_condensed(block, dofs, constraints, matrix, rhs);
         // K w, K the pair's stiffness in the end state.
-        const Tensor<1, dim> pull = p.stiffness * rest[k] / end_state.c;
+        if (!moving)
+          return;
+        const Tensor<1, dim> pull =
+          p.stiffness * carried(now[k], end[k], position(a, u)) / end_state.c;
         for (unsigned int i = 0; i < dim; ++i)
           if (pull[i] != 0. && !constraints.is_constrained(dofs[i]))
             {
@@ -479,17 +588,50 @@ namespace hyperelastic
         const Point<dim> x = position(a, u);
         for (unsigned int k = 0; k < obstacles.size(); ++k)
           {
-            // The vertex's motion relative to the obstacle.
+            // The vertex's motion relative to the obstacle's point p: in
+            // the obstacle's frame as it stands now, x - p moves to
+            // R(-s turn) (x - p + s w) over s in [0, 1].
             Tensor<1, dim> p = now[k].point - end[k].point;
             for (unsigned int c = 0; c < dim; ++c)
               p[c] += end_state.c * direction(v.dofs[c]);
+            const double         turn   = end[k].angle - now[k].angle;
+            const Tensor<1, dim> offset = x - now[k].point;
+            const Tensor<1, 3>  &axis   = now[k].axis;
             if (now[k].type == ObstacleType::mesh)
               {
-                alpha = std::min(
-                  alpha,
-                  now[k].surface->largest_step(Point<dim>(x - now[k].point),
-                                               p,
-                                               1. - feasible_fraction));
+                const double keep = 1. - feasible_fraction;
+                if (!now[k].turns)
+                  alpha = std::min(
+                    alpha,
+                    now[k].surface->largest_step(Point<dim>(offset), p, keep));
+                else if (turn == 0.)
+                  alpha =
+                    std::min(alpha,
+                             now[k].surface->largest_step(
+                               Point<dim>(transpose(now[k].rotation) * offset),
+                               transpose(now[k].rotation) * p,
+                               keep));
+                else
+                  {
+                    // In the surface's coordinates Q(s)^T (x(s) - p(s)),
+                    // moving at most |w| + |turn| |(x(s) - p(s)) across
+                    // the axis|.
+                    const Tensor<2, dim> back = transpose(now[k].rotation);
+                    const double         speed =
+                      p.norm() + std::abs(turn) * (across(axis, offset).norm() +
+                                                   across(axis, p).norm());
+                    alpha =
+                      std::min(alpha,
+                               now[k].surface->largest_step_along(
+                                 [&](const double s) {
+                                   return Point<dim>(
+                                     back *
+                                     (rotation_about<dim>(axis, -s * turn) *
+                                      (offset + s * p)));
+                                 },
+                                 speed,
+                                 keep));
+                  }
                 continue;
               }
             const double d0 = distance(now[k], x, d_hat_value);
@@ -498,13 +640,23 @@ namespace hyperelastic
             double hit = std::numeric_limits<double>::infinity();
             if (now[k].type == ObstacleType::plane)
               {
-                const double approach = -(now[k].normal * p);
+                // d(s) = n(s) . (x - p + s w), n(s) the normal turned by
+                // s turn: d' >= n . w - |turn| |n across| (|x - p across| +
+                // 2 |w across|) (the normal turns at |turn| |n across|,
+                // and has turned by at most that much), so d(s) stays above
+                // d0 - s approach. Without rotation: -n . w.
+                const double approach =
+                  -(now[k].normal * p) +
+                  std::abs(turn) * across(axis, now[k].normal).norm() *
+                    (across(axis, offset).norm() + 2. * across(axis, p).norm());
                 if (approach > 0.)
                   hit = d0 / approach;
               }
             else
               {
-                // |x - c + s p| = R: a s^2 + 2 b s + c0 = 0, first root > 0.
+                // |x - c + s p| = R: a s^2 + 2 b s + c0 = 0, first root > 0
+                // (a sphere turns about its centre: the rotation leaves
+                // the distances alone).
                 const Tensor<1, dim> r  = x - now[k].point;
                 const double         a  = p * p;
                 const double         b  = r * p;
@@ -570,7 +722,7 @@ namespace hyperelastic
       return false;
     const std::vector<Placed> now = placed(reached), end = placed(t_end);
     for (unsigned int k = 0; k < obstacles.size(); ++k)
-      if (now[k].point != end[k].point)
+      if (now[k].point != end[k].point || now[k].angle != end[k].angle)
         return true;
     // Standing still: nothing to carry.
     reached = t_end;

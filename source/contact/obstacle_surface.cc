@@ -196,12 +196,24 @@ namespace hyperelastic
                                      const Tensor<1, dim> &p,
                                      const double          keep) const
   {
-    const double length = p.norm();
-    if (!(length > 0.))
+    return largest_step_along([&](const double s) { return x + s * p; },
+                              p.norm(),
+                              keep);
+  }
+
+  template <int dim>
+  double
+  ObstacleSurface<dim>::largest_step_along(
+    const std::function<Point<dim>(double)> &path,
+    const double                             speed,
+    const double                             keep) const
+  {
+    if (!(speed > 0.))
       return 1.;
     // Nothing within twice the way: the full step stays clear.
-    const double d0 = distance(x, 2. * length);
-    if (!(d0 < 2. * length))
+    const Point<dim> x  = path(0.);
+    const double     d0 = distance(x, 2. * speed);
+    if (!(d0 < 2. * speed))
       return 1.;
     const double target = keep * d0;
     double       alpha = 0., d = d0;
@@ -210,11 +222,11 @@ namespace hyperelastic
         const double gap = d - target;
         if (gap <= 1e-3 * (d0 - target))
           return alpha;
-        // The distance falls by at most length per unit alpha.
-        alpha += gap / length;
+        // The distance falls by at most speed per unit alpha.
+        alpha += gap / speed;
         if (alpha >= 1.)
           return 1.;
-        d = distance(x + alpha * p, d0 + 2. * length);
+        d = distance(path(alpha), d0 + 2. * speed);
       }
     return alpha;
   }

@@ -1,6 +1,7 @@
 // The scene's Contact subsection: the barrier (distance d_hat, stiffness
 // kappa), friction smoothing, and up to four rigid obstacles (plane, sphere,
-// meshed surface), each with a motion in time and a friction coefficient.
+// meshed surface), each with a rigid motion in time (a displacement and a
+// rotation about its point) and a friction coefficient.
 // Declared with pattern, default and documentation; parsed with the values
 // checked (an invalid value is an InputError naming the entry).
 #pragma once
@@ -34,7 +35,15 @@ namespace hyperelastic
     std::string         file;
     /// Displacement of the whole obstacle, one expression of t per axis.
     std::vector<std::string> motion;
-    double                   friction = 0.;
+    /// The axis of the obstacle's rotation about its Point (displaced by
+    /// Motion), normalised: 3D its 3 components, 2D one value, the sign of
+    /// the out-of-plane axis (+1: counter-clockwise for a positive angle);
+    /// empty: the obstacle does not turn.
+    std::vector<double> rotation_axis;
+    /// The rotation angle in radians, an expression of t ("0" without an
+    /// axis).
+    std::string rotation_angle = "0";
+    double      friction       = 0.;
   };
 
   struct ContactParameters

@@ -1,6 +1,9 @@
-// Contact of the body's boundary vertices with rigid obstacles (planes and
-// spheres, moving as expressions of t) through the IPC barrier and lagged,
-// smoothed Coulomb friction:
+// Contact of the body's boundary vertices with rigid obstacles (planes,
+// spheres and surface meshes, moving rigidly as expressions of t: a
+// displacement m(t) and a rotation Q(t) by an angle about a fixed axis
+// through the obstacle's point p, an obstacle point X of the entries'
+// placement being at p + m(t) + Q(t) (X - p)) through the IPC barrier and
+// lagged, smoothed Coulomb friction:
 //   V(u, t) = sum over boundary vertices a and obstacles k of
 //             kappa A_a b(d_k(x_a, t), d_hat)
 //           + mu_k lambda_ak f0(|s_ak|, eps),
@@ -8,15 +11,19 @@
 // u_a, lambda_ak the pair's normal force and P_ak the projection on its
 // tangent plane, both lagged (taken at the step's start, then at its
 // converged state for 'Friction lagging updates' more solves), s_ak =
-// P_ak (x_a - x_a(step start) - obstacle's displacement since then) the
-// slip of the step, f0 the smoothed |s| (f0' = f1, f1 = 1 beyond eps).
+// P_ak (x_a - x_a(step start) - w_ak) the slip of the step, w_ak the
+// displacement since the step began of the obstacle's material point that
+// was at x_a(step start) (a vertex stuck to a turning plate turns with
+// it), f0 the smoothed |s| (f0' = f1, f1 = 1 beyond eps).
 // One load term: forces g = -dV/du, load stiffness d2V/du2 (each pair's
 // dim x dim block positive semi-definite: the barrier's projected, the
 // friction's by construction), potential V.
 //
 // Feasibility: the largest feasible step keeps every distance above a tenth
 // of its value along a Newton direction (closed form for planes and
-// spheres), so no iterate crosses an obstacle. A moving obstacle does not
+// spheres, a turning plane's through a bound on the distance's rate of
+// change; conservative advancement for meshes), so no iterate crosses an
+// obstacle. A moving obstacle does not
 // jump to its place at t when a step begins: it stays where it was, and
 // each Newton iteration carries it (like a prescribed displacement) as far
 // along its way as the feasible step allows, together with the body
@@ -24,11 +31,15 @@
 // only once it has arrived.
 //
 // Distances: plane d = n . (x - p(t)), n the unit normal towards the body;
-// sphere d = |x - c(t)| - R (the body outside); mesh: the distance to the
-// rigid surface (contact/obstacle_surface.h), found through its R-tree, its
-// feasible step by conservative advancement. Every rank handles the
-// boundary vertices whose dofs it owns (P2: the vertices only, not the
-// mid-edge nodes); the answer does not depend on the number of ranks.
+// sphere d = |x - c(t)| - R (the body outside; turning about its centre,
+// only its friction feels the rotation); mesh: the distance to the rigid
+// surface (contact/obstacle_surface.h), evaluated in the surface's own
+// coordinates Q^T (x - p - m) (the gradient and Hessian turned back),
+// found through its R-tree, its feasible step by conservative advancement.
+// Within a step an obstacle's way is taken as linear in m and in the angle
+// between the obstacle times (exact for motions linear in t). Every rank
+// handles the boundary vertices whose dofs it owns (P2: the vertices only, not
+// the mid-edge nodes); the answer does not depend on the number of ranks.
 #pragma once
 
 #include <deal.II/base/function.h>
@@ -214,12 +225,28 @@ namespace hyperelastic
       /// coordinates
       dealii::Point<dim>          point;
       const ObstacleSurface<dim> *surface = nullptr; ///< mesh
-      dealii::Tensor<1, dim>      normal;
-      double                      radius   = 0.;
-      double                      friction = 0.;
-      /// Its displacement since the step began (friction's reference).
+      /// plane: the unit normal (turned with the obstacle)
+      dealii::Tensor<1, dim> normal;
+      double                 radius   = 0.;
+      double                 friction = 0.;
+      /// Whether it has a rotation axis; its axis, angle and rotation Q
+      /// from the entries' placement (the identity if it does not turn).
+      bool                   turns = false;
+      dealii::Tensor<1, 3>   axis;
+      double                 angle = 0.;
+      dealii::Tensor<2, dim> rotation;
+      /// Friction's reference: the displacement of its point since the
+      /// step began, and for a turning obstacle that point at the step's
+      /// start and the rotation since then.
       dealii::Tensor<1, dim> shift;
+      dealii::Point<dim>     start_point;
+      dealii::Tensor<2, dim> turn;
     };
+
+    /// The displacement, from placement @p from to placement @p to of the
+    /// same obstacle, of its material point at @p x in @p from.
+    static dealii::Tensor<1, dim>
+    carried(const Placed &from, const Placed &to, const dealii::Point<dim> &x);
 
     /// The obstacles at obstacle time @p time.
     std::vector<Placed>
@@ -301,6 +328,8 @@ namespace hyperelastic
     /// The surfaces of the meshed obstacles (null for the others).
     std::vector<std::shared_ptr<const ObstacleSurface<dim>>> surfaces;
     std::vector<std::unique_ptr<dealii::Function<dim>>>      motions;
+    /// The rotation angles (null for obstacles that do not turn).
+    std::vector<std::unique_ptr<dealii::Function<dim>>>      angles;
     const MPI_Comm                                           comm;
     const bool                                               dynamic;
     std::vector<Vertex>                                      vertices;

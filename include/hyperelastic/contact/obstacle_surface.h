@@ -19,6 +19,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -56,6 +57,14 @@ namespace hyperelastic
     largest_step(const dealii::Point<dim>     &x,
                  const dealii::Tensor<1, dim> &p,
                  double                        keep) const;
+
+    /// The same along the curve @p path(s), s in [0, 1], whose speed
+    /// |path'(s)| is at most @p speed (a point moving relative to a
+    /// turning surface, given in the surface's coordinates).
+    double
+    largest_step_along(const std::function<dealii::Point<dim>(double)> &path,
+                       double                                           speed,
+                       double keep) const;
 
     unsigned int
     n_elements() const
