@@ -3,6 +3,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/contact/contact_layer.h>
+#include <hyperelastic/contact/mesh_obstacle_pairs.h>
 #include <hyperelastic/contact/obstacle_contact.h>
 #include <hyperelastic/contact/self_contact.h>
 
@@ -14,16 +15,19 @@ namespace hyperelastic
 
   namespace
   {
-    /// Reports for the obstacles and the self contact together: each
-    /// column is written once, from both terms' measures.
+    /// Reports for the obstacles (with the meshed obstacles' corner and
+    /// edge pairs) and the self contact together: each column is written
+    /// once, from all terms' measures.
     template <int dim>
     class ContactReport : public StepReporter<dim>
     {
     public:
-      ContactReport(const ObstacleContact<dim> *obstacles,
-                    const SelfContact<dim>     *self,
-                    const ContactSetup<dim>    &setup)
+      ContactReport(const ObstacleContact<dim>   *obstacles,
+                    const MeshObstaclePairs<dim> *corners,
+                    const SelfContact<dim>       *self,
+                    const ContactSetup<dim>      &setup)
           : obstacles(obstacles)
+          , corners(corners)
           , self(self)
           , n_obstacles(setup.parameters.obstacles.size())
           , dynamic(setup.dynamic)
@@ -45,6 +49,13 @@ namespace hyperelastic
                                : ", friction smoothing eps = ") +
                         std::to_string(obstacles->friction_smoothing(1.))
                     : std::string())
+              << std::endl;
+        if (corners)
+          out << "meshed obstacles: " << corners->n_features()[0]
+              << " sharp vertices against the body's boundary faces"
+              << (dim == 3 ? ", " + std::to_string(corners->n_features()[1]) +
+                               " sharp edges against its edges"
+                           : std::string())
               << std::endl;
         if (self)
           {
@@ -69,6 +80,16 @@ namespace hyperelastic
         ContactMeasures all;
         if (obstacles)
           all = obstacles->measure(state.u, state.t);
+        if (corners)
+          {
+            const ContactMeasures m = corners->measure(state.u, state.t);
+            for (const SummaryColumn &c : m.forces)
+              for (SummaryColumn &total : all.forces)
+                if (total.name == c.name)
+                  total.value += c.value;
+            all.min_distance = std::min(all.min_distance, m.min_distance);
+            all.active_pairs += m.active_pairs;
+          }
         if (self)
           {
             const ContactMeasures m = self->measure(state.u);
@@ -89,6 +110,8 @@ namespace hyperelastic
         VectorType owned(owned_dofs, comm);
         if (obstacles)
           obstacles->contact_forces(state.u, state.t, owned);
+        if (corners)
+          corners->contact_forces(state.u, state.t, owned);
         if (self)
           self->contact_forces(state.u, state.t, owned);
         owned.compress(VectorOperation::add);
@@ -115,7 +138,8 @@ namespace hyperelastic
       }
 
     private:
-      const ObstacleContact<dim> *const obstacles;
+      const ObstacleContact<dim> *const   obstacles;
+      const MeshObstaclePairs<dim> *const corners;
       const SelfContact<dim> *const     self;
       const std::size_t                 n_obstacles;
       const bool                        dynamic;
@@ -141,8 +165,15 @@ namespace hyperelastic
     };
     ObstacleContact<dim> *obstacles = nullptr;
     SelfContact<dim>     *self      = nullptr;
+    MeshObstaclePairs<dim> *corners = nullptr;
     if (!parameters.obstacles.empty())
       obstacles = add(std::make_unique<ObstacleContact<dim>>(parameters,
+                                                             setup.constants,
+                                                             setup.dof_handler,
+                                                             setup.moduli,
+                                                             setup.dynamic));
+    if (MeshObstaclePairs<dim>::wanted(parameters))
+      corners = add(std::make_unique<MeshObstaclePairs<dim>>(parameters,
                                                              setup.constants,
                                                              setup.dof_handler,
                                                              setup.moduli,
@@ -161,7 +192,7 @@ namespace hyperelastic
       }
     if (!obstacles && !self)
       return nullptr;
-    return std::make_unique<ContactReport<dim>>(obstacles, self, setup);
+    return std::make_unique<ContactReport<dim>>(obstacles, corners, self, setup);
   }
 
   template std::unique_ptr<StepReporter<2>>
