@@ -3,6 +3,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/contact/contact_layer.h>
+#include <hyperelastic/contact/mesh_obstacle_pairs.h>
 #include <hyperelastic/contact/obstacle_contact.h>
 #include <hyperelastic/contact/self_contact.h>
 
@@ -14,16 +15,19 @@ namespace hyperelastic
 
   namespace
   {
-    /// Reports for the obstacles and the self contact together: each
-    /// column is written once, from both terms' measures.
+    /// Reports for the obstacles (with the meshed obstacles' corner and
+    /// edge pairs) and the self contact together: each column is written
+    /// once, from all terms' measures.
     template <int dim>
     class ContactReport : public StepReporter<dim>
     {
     public:
-      ContactReport(const ObstacleContact<dim> *obstacles,
-                    const SelfContact<dim>     *self,
-                    const ContactSetup<dim>    &setup)
+      ContactReport(const ObstacleContact<dim>   *obstacles,
+                    const MeshObstaclePairs<dim> *corners,
+                    const SelfContact<dim>       *self,
+                    const ContactSetup<dim>      &setup)
           : obstacles(obstacles)
+          , corners(corners)
           , self(self)
           , n_obstacles(setup.parameters.obstacles.size())
           , dynamic(setup.dynamic)
@@ -44,6 +48,13 @@ namespace hyperelastic
                                : ", friction smoothing eps = ") +
                         std::to_string(obstacles->friction_smoothing(1.))
                     : std::string())
+              << std::endl;
+        if (corners)
+          out << "meshed obstacles: " << corners->n_features()[0]
+              << " sharp vertices against the body's boundary faces"
+              << (dim == 3 ? ", " + std::to_string(corners->n_features()[1]) +
+                               " sharp edges against its edges"
+                           : std::string())
               << std::endl;
         if (self)
           {
@@ -68,6 +79,16 @@ namespace hyperelastic
         ContactMeasures all;
         if (obstacles)
           all = obstacles->measure(state.u, state.t);
+        if (corners)
+          {
+            const ContactMeasures m = corners->measure(state.u, state.t);
+            for (const SummaryColumn &c : m.forces)
+              for (SummaryColumn &total : all.forces)
+                if (total.name == c.name)
+                  total.value += c.value;
+            all.min_distance = std::min(all.min_distance, m.min_distance);
+            all.active_pairs += m.active_pairs;
+          }
         if (self)
           {
             const ContactMeasures m = self->measure(state.u);
@@ -88,6 +109,8 @@ namespace hyperelastic
         VectorType owned(owned_dofs, comm);
         if (obstacles)
           obstacles->contact_forces(state.u, state.t, owned);
+        if (corners)
+          corners->contact_forces(state.u, state.t, owned);
         if (self)
           self->contact_forces(state.u, state.t, owned);
         owned.compress(VectorOperation::add);
@@ -114,7 +137,8 @@ namespace hyperelastic
       }
 
     private:
-      const ObstacleContact<dim> *const obstacles;
+      const ObstacleContact<dim> *const   obstacles;
+      const MeshObstaclePairs<dim> *const corners;
       const SelfContact<dim> *const     self;
       const std::size_t                 n_obstacles;
       const bool                        dynamic;
@@ -164,11 +188,20 @@ namespace hyperelastic
         setup.moduli,
         setup.dynamic,
         self_term ? &self_term->settings() : nullptr));
+    // A meshed obstacle's sharp corners and edges against the body's faces
+    // and edges.
+    MeshObstaclePairs<dim> *corners = nullptr;
+    if (MeshObstaclePairs<dim>::wanted(parameters))
+      corners = add(std::make_unique<MeshObstaclePairs<dim>>(parameters,
+                                                             setup.constants,
+                                                             setup.dof_handler,
+                                                             setup.moduli,
+                                                             setup.dynamic));
     if (self_term)
       self = add(std::move(self_term));
     if (!obstacles && !self)
       return nullptr;
-    return std::make_unique<ContactReport<dim>>(obstacles, self, setup);
+    return std::make_unique<ContactReport<dim>>(obstacles, corners, self, setup);
   }
 
   template std::unique_ptr<StepReporter<2>>

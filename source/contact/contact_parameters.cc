@@ -77,6 +77,19 @@ namespace hyperelastic
       "smoothing, Friction lagging updates): each pair's tangential slip is "
       "measured between its closest points, in the tangent plane of its "
       "last converged state. 0: frictionless.");
+    prm.declare_entry(
+      "Meshed obstacle corners",
+      "true",
+      Bool(),
+      "Meshed obstacles (Type = mesh): keep their sharp vertices off the "
+      "body's boundary faces and (3D) their sharp edges off the body's "
+      "boundary edges (vertex-face and edge-edge pairs through the same "
+      "barrier, frictionless), besides the body's boundary vertices off "
+      "their surfaces, so that no corner or edge of an obstacle passes "
+      "through a body face however coarse the body. Flat parts of an "
+      "obstacle (edges between triangles in one plane) add nothing. "
+      "false: the body's vertices only (a sharp obstacle can then pass "
+      "through a coarse body's face).");
     for (unsigned int k = 1; k <= max_obstacles; ++k)
       {
         prm.enter_subsection("Obstacle " + std::to_string(k));
@@ -151,6 +164,7 @@ namespace hyperelastic
     friction_smoothing       = get_finite(prm, "Contact", "Friction smoothing");
     friction_lagging_updates = prm.get_integer("Friction lagging updates");
     self_contact             = prm.get_bool("Self contact");
+    meshed_obstacle_corners  = prm.get_bool("Meshed obstacle corners");
     self_contact_friction =
       get_finite(prm, "Contact", "Self contact friction coefficient");
     if (self_contact_friction > 0. && !self_contact)
@@ -224,6 +238,17 @@ namespace hyperelastic
           reject(o.subsection + "/Radius",
                  std::to_string(o.radius),
                  "must be positive");
+        // The corner and edge pairs of meshed obstacles follow their
+        // translation only.
+        if (o.type == ObstacleType::mesh && !o.rotation_axis.empty() &&
+            meshed_obstacle_corners)
+          reject(o.subsection + "/Rotation axis",
+                 axis_text,
+                 "turns a meshed obstacle, whose corner and edge pairs do "
+                 "not turn yet: set 'Contact/Meshed obstacle corners = "
+                 "false' (the body's vertices are then kept off the turning "
+                 "surface, but a sharp corner may pass through a coarse "
+                 "body's face)");
         obstacles.push_back(o);
       }
     prm.leave_subsection();

@@ -61,6 +61,10 @@ namespace hyperelastic
     bool self_contact = false;
     /// mu of the friction between parts of the boundary (self contact).
     double self_contact_friction = 0.;
+    /// Meshed obstacles: their sharp vertices against the body's boundary
+    /// faces and their sharp edges against its edges, besides the body's
+    /// vertices against their surfaces.
+    bool meshed_obstacle_corners = true;
     /// The obstacles whose Type is not none, in the order of their sections.
     std::vector<ObstacleParameters> obstacles;
 

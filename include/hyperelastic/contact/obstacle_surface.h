@@ -72,6 +72,19 @@ namespace hyperelastic
       return elements.size();
     }
 
+    /// The vertices (file coordinates) and the elements (dim vertex
+    /// indices each).
+    const std::vector<dealii::Point<dim>> &
+    points() const
+    {
+      return vertices;
+    }
+    const std::vector<std::array<unsigned int, dim>> &
+    element_vertices() const
+    {
+      return elements;
+    }
+
   private:
     void
     build_tree();
