@@ -25,13 +25,15 @@
 //               accelerates at 0.2 mu g (2 %).
 //   hertz 2 MESH  a half disk pressed onto a plane: the contact half-width
 //               against Hertz's (5 %); MESH: meshes/half_disk_2d.msh.
-//   hertz 3 MESH [TOLERANCE]  a rigid sphere pressed into a half-space
-//               block (quarter model): the force against 4/3 E* sqrt(R)
-//               delta^1.5 (relative TOLERANCE, default 5 %) and the contact
-//               radius against sqrt(R delta) (5 %); MESH:
-//               meshes/hertz_block_3d.msh (P1 too stiff there by 7.7 %: the
-//               ctest asks 10 %; benchmarks/contact/hertz_3d.sh runs finer
-//               meshes of the same .geo at 5 %).
+//   hertz 3 MESH [TOLERANCE [DEGREE]]  a rigid sphere pressed into a
+//               half-space block (quarter model): the force against 4/3 E*
+//               sqrt(R) delta^1.5 (relative TOLERANCE, default 5 %) and the
+//               contact radius against sqrt(R delta) (5 %), elements of
+//               DEGREE (default 1); MESH: meshes/hertz_block_3d.msh (P1 too
+//               stiff there by 7.7 %: the ctest asks 10 %;
+//               benchmarks/contact/hertz_3d.sh runs finer meshes of the
+//               same .geo at 5 %; P2 on this mesh: 2.3 %, radius 1.4 %, in
+//               about 3 minutes).
 // Usage: mpirun -np N contact CASE DIM [MESH]
 #include <deal.II/base/mpi.h>
 
@@ -852,11 +854,16 @@ namespace
   /// second moment <r^2> = 2 a^2 / 5 over its disk, so a = sqrt(5/2 sum r_a^2
   /// f_a / sum f_a) (the quarter's forces have the whole disk's moments).
   void
-  hertz_3d(Checker &checker, const std::string &mesh, const double force_tolerance)
+  hertz_3d(Checker           &checker,
+           const std::string &mesh,
+           const double       force_tolerance,
+           const int          degree)
   {
     const double      R = 0.1, d_hat = 1e-5, push = 0.002 + 0.5 * d_hat;
     const std::string scene =
-      subsection("Problem", entry("Dimension", "3")) +
+      subsection("Problem",
+                 entry("Dimension", "3") +
+                   entry("Finite element degree", std::to_string(degree))) +
       subsection("Mesh", entry("Source", "file") + entry("File", mesh)) +
       subsection("Material",
                  entry("Model", "neo-Hookean") + entry("Young's modulus", "1") +
@@ -994,7 +1001,8 @@ main(int argc, char **argv)
       else if (which == "hertz")
         hertz_3d(checker,
                  argc > 3 ? argv[3] : "hertz_block_3d.msh",
-                 argc > 4 ? std::atof(argv[4]) : 0.05);
+                 argc > 4 ? std::atof(argv[4]) : 0.05,
+                 argc > 5 ? std::atoi(argv[5]) : 1);
       else
         resting<3>(checker);
     });
