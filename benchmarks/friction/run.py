@@ -12,7 +12,7 @@ Scenes (written here; neo-Hookean E = 1, nu = 0.3 unless said):
                      plate pressing it 30 % in 10 quasi-static steps, no
                      Dirichlet condition (held by the plates)
   ball_between_plates  the hollow ball of meshes/hollow_ball_3d.geo meshed
-                     with h = 0.09 (over 20k tetrahedra) between a floor and
+                     with h = 0.08 (over 20k tetrahedra) between a floor and
                      a plate that squeezes it 40 % (0.8 of its height 1.98),
                      backward Euler h = 0.05 to t = 1.6, self contact, no
                      Dirichlet condition
@@ -36,7 +36,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 MPIRUN = os.path.join(ROOT, "scripts", "mpirun.sh")
 COST = os.path.join(HERE, "cost.csv")
 GEO = os.path.join(ROOT, "meshes", "hollow_ball_3d.geo")
-BALL_MESH = os.path.join(HERE, "meshes", "hollow_ball_h0.09.msh")
+BALL_MESH = os.path.join(HERE, "meshes", "hollow_ball_h0.08.msh")
 
 COMMON = """
 subsection Problem
@@ -143,7 +143,7 @@ def ball_mesh():
     if not os.path.exists(BALL_MESH):
         os.makedirs(os.path.dirname(BALL_MESH), exist_ok=True)
         subprocess.run(["gmsh", "-3", "-format", "msh41", "-setnumber", "h",
-                        "0.09", GEO, "-o", BALL_MESH], check=True,
+                        "0.08", GEO, "-o", BALL_MESH], check=True,
                        stdout=subprocess.DEVNULL)
 
 
