@@ -376,7 +376,10 @@ namespace hyperelastic
   EquilibriumSystem<dim>::judge_converged_state(const bool update_lagged)
   {
     if (update_lagged &&
-        elasticity->update_lagged(u_ghosted, current_load_factor))
+        elasticity->update_lagged(u_ghosted,
+                                  current_load_factor,
+                                  LagMoment::converged) ==
+          LaggedUpdate::updated)
       return Verdict::continue_iterating;
     // Accepted with a warning, or rejected, by the scene's policy.
     const InvertedCells<dim> inverted =
@@ -391,6 +394,15 @@ namespace hyperelastic
     return Verdict::accepted;
   }
 
+  template <int dim>
+  LaggedUpdate
+  EquilibriumSystem<dim>::update_lagged()
+  {
+    return elasticity->update_lagged(u_ghosted,
+                                     current_load_factor,
+                                     LagMoment::within_solve);
+  }
+
   // ------------------------------------------------------- SteppedSystem
   template <int dim>
   void
@@ -399,6 +411,8 @@ namespace hyperelastic
     // The terms' step state starts at the last converged one (before the
     // driver's predictor, which is checked against it).
     elasticity->begin_step(converged.u, converged.load_factor);
+    if (previous.valid && previous.load_factor < converged.load_factor)
+      elasticity->extrapolate_lagged(previous.u, previous.load_factor);
     current_load_factor =
       stepping->begin_step(t, converged, previous, u, u_ghosted);
   }

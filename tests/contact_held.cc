@@ -8,8 +8,10 @@
 //                rigid motion (mean in-plane displacement; in 3D also the
 //                mean rotation about the pressing axis) is zero to
 //                round-off. With mu =
-//                0.5 on both: the run completes and the plate's and the
-//                floor's forces balance (every component, 1e-8).
+//                0.5 on both: the run completes, the plate's and the
+//                floor's forces balance (every component, 1e-8), and the
+//                steps after the first two take at most 2.5 times the
+//                frictionless Newton iterations.
 //   stacked DIM MESH  a unit block on a clamped long one
 //                (meshes/block_on_block_DIMd.msh), pressed 30 % by a plate,
 //                frictionless, all defaults: the upper block is held
@@ -125,9 +127,20 @@ namespace
     const double      d_hat = 1e-3, squash = 0.2;
     const std::string up    = axes[dim - 1];
     const std::string tag   = std::to_string(dim) + "D block held by plates: ";
+    // Newton iterations of the steps after the first two (friction's
+    // normal forces are extrapolated from two converged states).
+    const auto later_iterations = [](const auto &summaries) {
+      double sum = 0.;
+      for (const auto &row : summaries)
+        if (row.step > 2)
+          sum += column(row, "newton_iterations");
+      return sum;
+    };
+    double frictionless_iterations = 0.;
     {
       const auto problem =
         run_scene<dim>(block_held_by_plates<dim>(d_hat, squash, 0.));
+      frictionless_iterations = later_iterations(problem->summaries());
       const auto  &last        = problem->summaries().back();
       const double floor_force = column(last, "contact_force_1_" + up);
       const double plate_force = column(last, "contact_force_2_" + up);
@@ -185,6 +198,16 @@ namespace
                                                 axes[d])) /
                           scale,
                         1e-8);
+      // Lagging updates within Newton's iterations (issue 43, item 5):
+      // friction costs about one solve a step, not one per update
+      // (measured 1.58 in 2D, 2.08 in 3D; each update re-solving the step
+      // from its converged state cost 3 to 4.6 times in
+      // benchmarks/friction).
+      const double with_friction = later_iterations(problem->summaries());
+      checker.at_most(tag + "mu = 0.5: Newton iterations of steps 3-5 / "
+                            "frictionless ones",
+                      with_friction / frictionless_iterations,
+                      2.5);
     }
   }
 

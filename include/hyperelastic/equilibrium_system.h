@@ -138,6 +138,8 @@ namespace hyperelastic
     solution_scale() const override;
     Verdict
     judge_converged_state(bool update_lagged) override;
+    LaggedUpdate
+    update_lagged() override;
 
     // SteppedSystem
     void

@@ -52,10 +52,14 @@ namespace hyperelastic
       "Friction lagging updates",
       "4",
       Integer(0),
-      "How many times a step is solved again with friction's normal forces "
-      "and tangent directions taken from its converged state (they start "
-      "from the last step's); it stops earlier once no normal force changes "
-      "by more than 1e-3 of the largest. 0: the last step's values only.");
+      "How many times a step may take friction's normal forces and tangent "
+      "directions again: within Newton's iterations once the residual has "
+      "fallen by 10 (a change of more than half the largest normal force "
+      "waits for a smaller residual), and at the converged state, after "
+      "which Newton goes on with them. They start from the last step's, "
+      "quasi-statically extrapolated from the last two steps. No update "
+      "once no normal force changes by more than 1e-3 of the largest. 0: "
+      "the last step's values only.");
     prm.declare_entry(
       "Self contact",
       "false",

@@ -367,6 +367,7 @@ namespace hyperelastic
                              const Point<dim>  &x,
                              const Placed      &o,
                              const double       eps,
+                             const double       elapsed,
                              const bool         with_stiffness) const
   {
     PairState      state;
@@ -402,8 +403,9 @@ namespace hyperelastic
       }
     if (lagged.empty() || !(o.friction > 0.))
       return state;
-    const Lagged &l = lagged[a * obstacles.size() + k];
-    if (!(l.normal_force > 0.))
+    const Lagged &l      = lagged[a * obstacles.size() + k];
+    const double  lambda = l.normal_force_after(elapsed);
+    if (!(lambda > 0.))
       return state;
     // The slip of the step relative to the obstacle, in the lagged tangent
     // plane: the obstacle's point under the vertex's start has moved by
@@ -415,7 +417,7 @@ namespace hyperelastic
     const Tensor<1, dim> s =
       l.tangent_projection * (x - start_positions[a] - w);
     const SmoothedFriction f  = smoothed_friction(s.norm(), eps);
-    const double           ml = o.friction * l.normal_force;
+    const double           ml = o.friction * lambda;
     state.energy += ml * f.f0;
     state.force -= ml * f.f1_over_y * s;
     if (with_stiffness)
@@ -435,13 +437,15 @@ namespace hyperelastic
     const std::vector<Placed> where = placed(obstacle_time(t));
     const double              eps =
       friction_smoothing(end_time(t) - std::min(step_start, t));
-    bool crossed = false;
+    const double elapsed = std::max(0., end_time(t) - step_start);
+    bool         crossed = false;
     for (unsigned int a = 0; a < vertices.size(); ++a)
       {
         const Point<dim> x = position(a, u);
         for (unsigned int k = 0; k < obstacles.size(); ++k)
           {
-            PairState p = pair(a, k, x, where[k], eps, with_stiffness);
+            PairState p =
+              pair(a, k, x, where[k], eps, elapsed, with_stiffness);
             // The potential w V(x_end) / c in the solved state: gradient
             // w V'(x_end), Hessian w c V''(x_end).
             p.energy *= end_state.energy_factor();
@@ -739,24 +743,46 @@ namespace hyperelastic
   }
 
   template <int dim>
-  bool
-  ObstacleContact<dim>::update_lagged(const VectorType &u, const double t)
+  LaggedUpdate
+  ObstacleContact<dim>::update_lagged(const VectorType &u,
+                                      const double      t,
+                                      const LagMoment   moment)
   {
     if (!has_friction() || !lagging.may_update())
-      return false;
-    std::vector<Lagged> next   = lagged_at(u, obstacle_time(t));
+      return LaggedUpdate::unchanged;
+    std::vector<Lagged> next    = lagged_at(u, obstacle_time(t));
+    const double        elapsed = std::max(0., end_time(t) - step_start);
     double              change = 0., largest = 0.;
     for (unsigned int i = 0; i < next.size(); ++i)
       {
-        change =
-          std::max(change,
-                   std::abs(next[i].normal_force - lagged[i].normal_force));
+        change = std::max(change,
+                          std::abs(next[i].normal_force -
+                                   lagged[i].normal_force_after(elapsed)));
         largest = std::max(largest, next[i].normal_force);
       }
-    if (!lagging.accept(change, largest, comm))
-      return false;
-    lagged = std::move(next);
-    return true;
+    const LaggedUpdate outcome =
+      lagging.decide(change, largest, moment, comm);
+    if (outcome == LaggedUpdate::updated)
+      lagged = std::move(next);
+    return outcome;
+  }
+
+  template <int dim>
+  void
+  ObstacleContact<dim>::extrapolate_lagged(const VectorType &u_before,
+                                           const double      t_before)
+  {
+    // Quasi-static only: in dynamics the step is short, lambda_n is close,
+    // and the difference of two states carries their vibrations.
+    if (dynamic || !has_friction() || !(t_before < step_start))
+      return;
+    // The positions of the state before, with the obstacles where they
+    // stood then (the end-state map is the identity between steps).
+    const std::vector<Lagged> before = lagged_at(u_before, t_before);
+    for (unsigned int i = 0; i < lagged.size(); ++i)
+      if (lagged[i].normal_force > 0. && before[i].normal_force > 0.)
+        lagged[i].rate = (lagged[i].normal_force - before[i].normal_force) /
+                         (step_start - t_before);
   }
 
   template <int dim>

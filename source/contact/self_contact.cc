@@ -591,11 +591,13 @@ namespace hyperelastic
   }
 
   template <int dim>
-  bool
-  SelfContact<dim>::update_lagged(const VectorType &u, const double)
+  LaggedUpdate
+  SelfContact<dim>::update_lagged(const VectorType &u,
+                                  const double,
+                                  const LagMoment moment)
   {
     if (!(friction > 0.) || !lagging.may_update())
-      return false;
+      return LaggedUpdate::unchanged;
     const auto          scope = timed_section(timer, "contact");
     std::vector<Lagged> next  = lag(near_state(u));
     // The largest change of a pair's normal force (pairs that appear or
@@ -616,10 +618,11 @@ namespace hyperelastic
       }
     for (const auto &[pair, force] : before)
       change = std::max(change, force);
-    if (!lagging.accept(change, largest, comm))
-      return false;
-    lagged = std::move(next);
-    return true;
+    const LaggedUpdate outcome =
+      lagging.decide(change, largest, moment, comm);
+    if (outcome == LaggedUpdate::updated)
+      lagged = std::move(next);
+    return outcome;
   }
 
   template <int dim>

@@ -111,22 +111,18 @@ namespace hyperelastic
     // a_n: c M (u - w) = M a_n, u = w + a_n / c (backward Euler u_n + h v_n
     // + h^2 a_n, Newmark u_n + h v_n + h^2/2 a_n, midpoint's solved state
     // u_n + h/2 v_n + h^2/4 a_n). A rigid motion under constant forces
-    // starts at its answer, however far it has gone (issue 41). Not with
-    // contact: the guess could cross an obstacle, and the iterates must
-    // stay on its side.
-    // A guess outside the model's domain (a cell inverted by a violent
-    // extrapolation) is not taken either.
-    if (!context.contact.active() && c > 0.)
+    // starts at its answer, however far it has gone (issue 41). With
+    // contact the guess could cross an obstacle, and the iterates must
+    // stay on its side: frictionless contact starts at u_n; friction takes
+    // the guess as far as it is feasible (below, once the end-state map is
+    // set), since its first linearization at u_n would be the stiff stick
+    // branch of every sliding vertex (zero slip).
+    const bool guess = c > 0. && (!context.contact.active() ||
+                                  context.contact.has_friction());
+    if (guess)
       {
-        u = scratch;
-        u.add(1. / c, acceleration);
-        u_ghosted = u;
-        if (!context.material.defined_for_inverted_elements() &&
-            !(context.elasticity.evaluate(u_ghosted, t, false).min_J > 0.))
-          {
-            u         = converged.u;
-            u_ghosted = u;
-          }
+        new_velocity = scratch;
+        new_velocity.add(1. / c, acceleration);
       }
     if (stiffness_damping)
       {
@@ -140,9 +136,48 @@ namespace hyperelastic
     const double solved = integrator->evaluation_time(converged.load_factor, t);
     context.elasticity.set_end_state_map(h / (solved - converged.load_factor),
                                          integrator->end_force_weight());
+    if (guess)
+      start_from_guess(converged, solved, u, u_ghosted);
     // A model with history (viscoelasticity): the step lasts h.
     context.elasticity.begin_material_step(h);
     return solved;
+  }
+
+  template <int dim>
+  void
+  ImplicitDynamics<dim>::start_from_guess(const ConvergedState &converged,
+                                          const double          solved,
+                                          VectorType           &u,
+                                          VectorType           &u_ghosted)
+  {
+    // new_velocity holds the guess. Contact shortens its increment to the
+    // fraction that keeps every vertex off the obstacles (moving jointly)
+    // and the boundary off itself; the obstacles stop as far.
+    double fraction = 1.;
+    if (context.contact.active())
+      {
+        new_velocity -= converged.u;
+        fraction = std::min(1.,
+                            context.elasticity.largest_feasible_step(
+                              converged.u, new_velocity, solved));
+        u = converged.u;
+        u.add(fraction, new_velocity);
+      }
+    else
+      u = new_velocity;
+    u_ghosted = u;
+    // A guess outside the model's domain (a cell inverted by a violent
+    // extrapolation) is not taken either.
+    if (!(fraction > 0.) ||
+        (!context.material.defined_for_inverted_elements() &&
+         !(context.elasticity.evaluate(u_ghosted, solved, false).min_J > 0.)))
+      {
+        u         = converged.u;
+        u_ghosted = u;
+        return;
+      }
+    if (context.contact.active())
+      context.elasticity.advance(fraction, solved);
   }
 
   template <int dim>

@@ -331,20 +331,62 @@ namespace hyperelastic
     // A linear problem is solved by its first full step (to the linear
     // solver's tolerance): a second solve would only polish round-off.
     const bool linear_done = properties.linear && row.step_length == 1.;
-    if (state.moving_constraints ||
-        !(convergence.converged(norms, row.update, system.solution_scale()) ||
-          linear_done))
+    if (state.moving_constraints)
       return false;
+    if (!(convergence.converged(norms, row.update, system.solution_scale()) ||
+          linear_done))
+      {
+        update_lagged_early(system, norms, it, state);
+        return false;
+      }
     if (system.judge_converged_state(true) ==
         NonlinearSystem::Verdict::accepted)
       return true;
     // The equations changed (lagged friction): their energy at the current
     // iterate is new.
-    state.current      = TrialPoint();
-    state.budget_start = it;
+    state.current            = TrialPoint();
+    state.budget_start       = it;
+    state.early_lag_residual = -1.;
     if (verbose)
       pcout << "   (lagged quantities updated)" << std::endl;
     return false;
+  }
+
+  void
+  NewtonSolver::update_lagged_early(NonlinearSystem     &system,
+                                    const ResidualNorms &norms,
+                                    const unsigned int   it,
+                                    SolveState          &state) const
+  {
+    // Lagged friction: re-solving the step to full convergence for each
+    // update of the normal forces costs a solve an update. Once Newton has
+    // gained early_lag_reduction on the first residual of these equations,
+    // the iterate is close enough for the normal forces: they are updated
+    // there, and Newton goes on with the new equations (the convergence
+    // test still checks them once more when it passes).
+    if (state.early_lag_residual < 0.)
+      {
+        state.early_lag_residual = early_lag_reduction * norms.residual;
+        return;
+      }
+    if (!(norms.residual <= state.early_lag_residual))
+      return;
+    const LaggedUpdate outcome = system.update_lagged();
+    if (outcome == LaggedUpdate::unchanged)
+      {
+        state.early_lag_residual = 0.;
+        return;
+      }
+    if (outcome == LaggedUpdate::deferred)
+      {
+        state.early_lag_residual *= early_lag_reduction;
+        return;
+      }
+    state.current            = TrialPoint();
+    state.budget_start       = it;
+    state.early_lag_residual = -1.;
+    if (verbose)
+      pcout << "   (lagged quantities updated)" << std::endl;
   }
 
   NewtonResult

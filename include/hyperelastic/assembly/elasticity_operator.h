@@ -175,7 +175,8 @@ namespace hyperelastic
     }
 
     /// The stepped terms' hooks (SteppedTerm::begin_step,
-    /// set_end_state_map, update_lagged), each over all such terms.
+    /// extrapolate_lagged, set_end_state_map, update_lagged), each over
+    /// all such terms.
     /// Collective.
     void
     begin_step(const VectorType &u, const double t_start)
@@ -184,18 +185,24 @@ namespace hyperelastic
         term->begin_step(u, t_start);
     }
     void
+    extrapolate_lagged(const VectorType &u_before, const double t_before)
+    {
+      for (SteppedTerm<dim> *term : stepped_terms)
+        term->extrapolate_lagged(u_before, t_before);
+    }
+    void
     set_end_state_map(const double c, const double weight)
     {
       for (SteppedTerm<dim> *term : stepped_terms)
         term->set_end_state_map(c, weight);
     }
-    bool
-    update_lagged(const VectorType &u, const double t)
+    LaggedUpdate
+    update_lagged(const VectorType &u, const double t, const LagMoment moment)
     {
-      bool any = false;
+      LaggedUpdate outcome = LaggedUpdate::unchanged;
       for (SteppedTerm<dim> *term : stepped_terms)
-        any = term->update_lagged(u, t) || any;
-      return any;
+        outcome = combine(outcome, term->update_lagged(u, t, moment));
+      return outcome;
     }
 
     /// The forces of the terms held at the end of the step (those that

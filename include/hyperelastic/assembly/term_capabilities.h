@@ -14,6 +14,7 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <hyperelastic/base/lagged_update.h>
 #include <hyperelastic/base/linear_algebra.h>
 
 namespace hyperelastic
@@ -42,12 +43,24 @@ namespace hyperelastic
     virtual void
     set_end_state_map(double c, double weight) = 0;
 
-    /// At a converged state @p u (ghosted): updates the quantities the term
-    /// lags behind the iterate (friction's normal forces and tangents);
-    /// returns whether they changed enough that the step must be solved
-    /// again. Collective.
-    virtual bool
-    update_lagged(const VectorType &u, double t) = 0;
+    /// At the iterate @p u (ghosted), converged or not (@p moment): updates
+    /// the quantities the term lags behind the iterate (friction's normal
+    /// forces and tangents); returns whether they changed enough that
+    /// Newton must go on with them (updated), too little to matter, or too
+    /// much to be taken before convergence (deferred; see FrictionLagging).
+    /// Collective.
+    virtual LaggedUpdate
+    update_lagged(const VectorType &u, double t, LagMoment moment) = 0;
+
+    /// After begin_step(), when the converged state before it is known:
+    /// @p u_before (owned entries are read) at @p t_before < t_start. A
+    /// term may start its lagged quantities at their value extrapolated
+    /// from the two states to the step's end (friction's normal forces
+    /// growing under a ramped load), so that the step needs fewer
+    /// updates. Collective; nothing by default.
+    virtual void
+    extrapolate_lagged(const VectorType & /*u_before*/, double /*t_before*/)
+    {}
   };
 
   /// A term whose forces hold the iterates in an admissible set.

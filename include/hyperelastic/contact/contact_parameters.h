@@ -74,6 +74,16 @@ namespace hyperelastic
       return !obstacles.empty() || self_contact;
     }
 
+    /// Whether an obstacle or the self contact has friction.
+    bool
+    has_friction() const
+    {
+      for (const ObstacleParameters &o : obstacles)
+        if (o.friction > 0.)
+          return true;
+      return self_contact && self_contact_friction > 0.;
+    }
+
     static void
     declare(ParameterHandler &prm);
     /// Relative obstacle files are read from @p scene_folder.

@@ -1,10 +1,16 @@
-// Lagged friction's update rule, shared by the contact terms: at a converged
-// state the normal forces are taken again; if one changed by more than 1e-3
-// of the largest, the step is solved again with them, at most 'Friction
-// lagging updates' times a step.
+// Lagged friction's update rule, shared by the contact terms: the normal
+// forces are taken again at a converged state, and, before convergence, once
+// Newton's residual is small (NewtonSolver::update_lagged_early); if one
+// changed by more than 1e-3 of the largest, Newton goes on with them, at most
+// 'Friction lagging updates' times a step. Before convergence a change of
+// more than a tenth of the largest is deferred: the iterate is still too far
+// from the answer for its normal forces (an impact's first iterates press
+// vertices deep into the barrier).
 #pragma once
 
 #include <deal.II/base/mpi.h>
+
+#include <hyperelastic/base/lagged_update.h>
 
 namespace hyperelastic
 {
@@ -30,18 +36,21 @@ namespace hyperelastic
     }
 
     /// The largest change of a normal force on this rank and the largest
-    /// normal force: whether the change (over all ranks) calls for solving
-    /// the step again with the new ones; counts the update if so.
-    /// Collective.
-    bool
-    accept(double change, double largest, const MPI_Comm comm)
+    /// normal force, taken at @p moment: whether the change (over all
+    /// ranks) calls for going on with the new ones (updated; the update is
+    /// counted), is too small to matter (unchanged) or too large for an
+    /// iterate before convergence (deferred). Collective.
+    LaggedUpdate
+    decide(double change, double largest, const LagMoment moment, const MPI_Comm comm)
     {
       change  = dealii::Utilities::MPI::max(change, comm);
       largest = dealii::Utilities::MPI::max(largest, comm);
       if (!(change > 1e-3 * largest))
-        return false;
+        return LaggedUpdate::unchanged;
+      if (moment == LagMoment::within_solve && change > 0.5 * largest)
+        return LaggedUpdate::deferred;
       ++updates;
-      return true;
+      return LaggedUpdate::updated;
     }
 
   private:

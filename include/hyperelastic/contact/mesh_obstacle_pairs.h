@@ -130,10 +130,10 @@ namespace hyperelastic
       end_state = {c, weight};
     }
     /// Frictionless: nothing lagged.
-    bool
-    update_lagged(const VectorType &, double) override
+    LaggedUpdate
+    update_lagged(const VectorType &, double, LagMoment) override
     {
-      return false;
+      return LaggedUpdate::unchanged;
     }
     bool
     prepare_motion(double t) override;

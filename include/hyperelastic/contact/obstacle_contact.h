@@ -142,8 +142,13 @@ namespace hyperelastic
     prepare_motion(double t) override;
     void
     advance(double alpha, double t) override;
-    bool
-    update_lagged(const VectorType &u, double t) override;
+    LaggedUpdate
+    update_lagged(const VectorType &u, double t, LagMoment moment) override;
+    /// Friction's normal forces grow (or fall) within the step at the rate
+    /// they had between @p u_before at @p t_before and the step's start,
+    /// where both are positive, until the first update replaces them.
+    void
+    extrapolate_lagged(const VectorType &u_before, double t_before) override;
 
     /// The force each obstacle exerts on the body (columns
     /// contact_force_<k>_<axis>), the smallest distance and the active
@@ -265,7 +270,17 @@ namespace hyperelastic
     struct Lagged
     {
       double                          normal_force = 0.; ///< lambda
+      /// d lambda / dt, extrapolated from the last two converged states
+      /// (zero once updated within the step).
+      double                          rate = 0.;
       dealii::SymmetricTensor<2, dim> tangent_projection;
+
+      /// lambda at @p elapsed time after the step's start (not negative).
+      double
+      normal_force_after(const double elapsed) const
+      {
+        return std::max(0., normal_force + rate * elapsed);
+      }
     };
 
     /// A pair's share of V, its force on the body and its stiffness.
@@ -279,13 +294,15 @@ namespace hyperelastic
     };
 
     /// Vertex @p a at @p x against obstacle @p k placed at @p o; the
-    /// stiffness only if @p with_stiffness. Friction's eps: @p eps.
+    /// stiffness only if @p with_stiffness. Friction's eps: @p eps; the
+    /// time since the step's start: @p elapsed (extrapolated lambda).
     PairState
     pair(unsigned int              a,
          unsigned int              k,
          const dealii::Point<dim> &x,
          const Placed             &o,
          double                    eps,
+         double                    elapsed,
          bool                      with_stiffness) const;
 
     /// Calls @p f(a, k, pair) for every vertex a and obstacle k (pairs

@@ -139,8 +139,8 @@ namespace hyperelastic
     /// active pairs at the converged @p u; true if a normal force changed
     /// by more than 1e-3 of the largest (at most 'Friction lagging updates'
     /// times a step).
-    bool
-    update_lagged(const VectorType &u, double t) override;
+    LaggedUpdate
+    update_lagged(const VectorType &u, double t, LagMoment moment) override;
 
     bool
     needs_new_couplings(const VectorType &u, double t) override;

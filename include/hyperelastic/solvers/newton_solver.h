@@ -6,6 +6,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
+#include <hyperelastic/base/lagged_update.h>
 #include <hyperelastic/base/tangent_projection_mode.h>
 #include <hyperelastic/solvers/convergence_test.h>
 #include <hyperelastic/solvers/newton_parameters.h>
@@ -159,6 +160,17 @@ namespace hyperelastic
     /// elements), and returns accepted.
     virtual Verdict
     judge_converged_state(bool update_lagged) = 0;
+
+    /// Before convergence, once the residual is small: updates the lagged
+    /// quantities at the current iterate as judge_converged_state() would;
+    /// returns whether they changed (updated: the energy of the current
+    /// iterate is new), changed too little, or would change too much for an
+    /// iterate before convergence (deferred). Nothing changes by default.
+    virtual LaggedUpdate
+    update_lagged()
+    {
+      return LaggedUpdate::unchanged;
+    }
   };
 
   /// Newton's method with a backtracking line search for a NonlinearSystem:
@@ -210,6 +222,12 @@ namespace hyperelastic
       /// budget; the table counts on through them. The iteration before
       /// the first one of the current solve.
       unsigned int budget_start = 0;
+      /// Lagged quantities are updated within the solve once the residual
+      /// is below this (a fraction of the first residual after the step's
+      /// predictor or after the last update, a further fraction after each
+      /// deferral); negative: to be set from the next residual; zero: no
+      /// update before convergence.
+      double early_lag_residual = -1.;
     };
 
     /// One iteration from the current iterate: the projection @p policy
@@ -255,6 +273,20 @@ namespace hyperelastic
              const NewtonIteration             &row,
              unsigned int                       iteration,
              SolveState                        &state) const;
+
+    /// Before convergence: updates the system's lagged quantities once the
+    /// residual has fallen to early_lag_reduction times the first one of
+    /// the current equations (SolveState::early_lag_residual); the new
+    /// equations get a fresh budget from @p iteration on.
+    void
+    update_lagged_early(NonlinearSystem     &system,
+                        const ResidualNorms &norms,
+                        unsigned int         iteration,
+                        SolveState          &state) const;
+
+    /// The reduction of the residual after which lagged quantities are
+    /// updated within a solve.
+    static constexpr double early_lag_reduction = 0.1;
 
     /// The Eisenstat-Walker forcing term for the next linear solve, from the
     /// rows so far of this Newton solve (0 for an exact solve).

@@ -1,0 +1,35 @@
+// What an update of lagged quantities (friction's normal forces and
+// tangents) did: shared by the terms that lag, the operator that asks them
+// and Newton's solver that decides when to ask.
+#pragma once
+
+namespace hyperelastic
+{
+  /// When lagged quantities are taken again.
+  enum class LagMoment
+  {
+    converged,   ///< at a converged state of the current equations
+    within_solve ///< before convergence, once the residual is small
+  };
+
+  /// The outcome of an update of lagged quantities.
+  enum class LaggedUpdate
+  {
+    unchanged, ///< they changed too little to matter (or may not change)
+    updated,   ///< they changed: the equations are new
+    deferred   ///< within a solve: they would change too much for an
+               ///< iterate that has not converged; ask again later
+  };
+
+  /// The combined outcome of several terms' updates: updated if any
+  /// updated, else deferred if any deferred, else unchanged.
+  inline LaggedUpdate
+  combine(const LaggedUpdate a, const LaggedUpdate b)
+  {
+    if (a == LaggedUpdate::updated || b == LaggedUpdate::updated)
+      return LaggedUpdate::updated;
+    if (a == LaggedUpdate::deferred || b == LaggedUpdate::deferred)
+      return LaggedUpdate::deferred;
+    return LaggedUpdate::unchanged;
+  }
+} // namespace hyperelastic
