@@ -23,6 +23,7 @@ namespace hyperelastic
     ProblemParameters::declare(prm);
     MeshParameters::declare(prm);
     MaterialParameters::declare(prm);
+    RegionParameters::declare(prm);
     LoadingParameters::declare(prm);
     NewtonParameters::declare(prm);
     LoadSteppingParameters::declare(prm);
@@ -38,6 +39,7 @@ namespace hyperelastic
     problem.parse(prm);
     mesh.parse(prm, scene_folder);
     material.parse(prm);
+    regions = RegionParameters::parse_all(prm);
     loading.parse(prm);
     newton.parse(prm);
     load_stepping.parse(prm);
@@ -57,6 +59,27 @@ namespace hyperelastic
     resolve_formulation(problem, material);
     formulation_kind(problem.formulation)
       .check({problem, material, linear_solver, time_integration});
+    // Each region's material meets the same checks as the top-level one.
+    for (const RegionParameters &region : regions)
+      {
+        if (material.stiffness_warping)
+          reject("Material/Model",
+                 material.model,
+                 "stiffness warping works with one material for the whole "
+                 "mesh (the scene has '" +
+                   region.name() + "')");
+        check_in_region(region, [&](const MaterialParameters &m) {
+          if (m.stiffness_warping)
+            reject("Material/Model",
+                   m.model,
+                   "stiffness warping works with one material for the "
+                   "whole mesh");
+          formulation_kind(problem.formulation)
+            .check({problem, m, linear_solver, time_integration});
+          check_viscoelasticity(m, load_stepping, time_integration);
+          check_inverted_elements(newton, m);
+        });
+      }
     check_arc_length(load_stepping, time_integration, contact, problem);
     output.check_checkpoints(load_stepping, time_integration);
     check_viscoelasticity(material, load_stepping, time_integration);

@@ -9,6 +9,7 @@
 #include <hyperelastic/formulation/formulation_parameters.h>
 #include <hyperelastic/loads/loading_parameters.h>
 #include <hyperelastic/materials/material_parameters.h>
+#include <hyperelastic/materials/region_parameters.h>
 #include <hyperelastic/mesh/mesh_parameters.h>
 #include <hyperelastic/output/output_parameters.h>
 #include <hyperelastic/solvers/linear_solver_parameters.h>
@@ -16,6 +17,7 @@
 #include <hyperelastic/solvers/newton_parameters.h>
 
 #include <string>
+#include <vector>
 
 namespace hyperelastic
 {
@@ -24,16 +26,18 @@ namespace hyperelastic
   /// All subsections of a scene.
   struct Parameters
   {
-    ProblemParameters         problem;
-    MeshParameters            mesh;
-    MaterialParameters        material;
-    LoadingParameters         loading;
-    NewtonParameters          newton;
-    LoadSteppingParameters    load_stepping;
-    TimeIntegrationParameters time_integration;
-    ContactParameters         contact;
-    LinearSolverParameters    linear_solver;
-    OutputParameters          output;
+    ProblemParameters  problem;
+    MeshParameters     mesh;
+    MaterialParameters material;
+    /// Region 1 ... Region 8: the regions the scene uses, in order.
+    std::vector<RegionParameters> regions;
+    LoadingParameters             loading;
+    NewtonParameters              newton;
+    LoadSteppingParameters        load_stepping;
+    TimeIntegrationParameters     time_integration;
+    ContactParameters             contact;
+    LinearSolverParameters        linear_solver;
+    OutputParameters              output;
     /// `hyperelastic --restart CHECKPOINT scene.prm`: the checkpoint the
     /// run continues from (not a scene entry; empty: from the start).
     std::string restart_checkpoint;

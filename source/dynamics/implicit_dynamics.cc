@@ -39,7 +39,9 @@ namespace hyperelastic
     if (parameters.stiffness_damping > 0.)
       {
         auto damping = std::make_unique<StiffnessDampingTerm<dim>>(
-          dof_handler, context.mapping, context.material.small_strain_moduli());
+          dof_handler,
+          context.mapping,
+          context.material.top().small_strain_moduli());
         stiffness_damping = damping.get();
         context.elasticity.add_term(std::move(damping));
       }
@@ -49,13 +51,12 @@ namespace hyperelastic
       std::make_unique<Motion<dim>>(dof_handler, context.mapping, *inertia);
     const dealii::IndexSet &owned = dof_handler.locally_owned_dofs();
     const MPI_Comm          comm  = dof_handler.get_communicator();
-    for (VectorType *v :
-         {&velocity,
-          &acceleration,
-          &new_velocity,
-          &new_acceleration,
-          &scratch,
-          &correction})
+    for (VectorType *v : {&velocity,
+                          &acceleration,
+                          &new_velocity,
+                          &new_acceleration,
+                          &scratch,
+                          &correction})
       v->reinit(owned, comm);
     if (!parameters.initial_velocity.empty())
       {
@@ -177,8 +178,7 @@ namespace hyperelastic
             inertia->solve_mass(scratch,
                                 context.homogeneous_constraints,
                                 correction);
-            new_acceleration.add(-integrator->end_force_weight(),
-                                 correction);
+            new_acceleration.add(-integrator->end_force_weight(), correction);
           }
       }
     velocity.swap(new_velocity);

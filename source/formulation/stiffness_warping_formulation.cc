@@ -31,11 +31,12 @@ namespace hyperelastic
       std::unique_ptr<Assembler<dim>>
       material_part(const dealii::DoFHandler<dim> &dof_handler,
                     const dealii::Mapping<dim>    &mapping,
-                    const Material<dim>           &material) const override
+                    const MaterialRegions<dim>    &material) const override
       {
+        // One material for the whole mesh (a scene check).
         return std::make_unique<WarpedAssembler<dim>>(dof_handler,
                                                       mapping,
-                                                      material);
+                                                      material.top());
       }
 
       bool
