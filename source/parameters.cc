@@ -62,6 +62,13 @@ namespace hyperelastic
     // Each region's material meets the same checks as the top-level one.
     for (const RegionParameters &region : regions)
       {
+        if (time_integration.dynamic() &&
+            time_integration.stiffness_damping > 0.)
+          reject("Time integration/Stiffness damping",
+                 std::to_string(time_integration.stiffness_damping),
+                 "stiffness damping (the rest stiffness of one material) "
+                 "is not available with regions yet (the scene has '" +
+                   region.name() + "'); use mass damping");
         if (material.stiffness_warping)
           reject("Material/Model",
                  material.model,

@@ -185,7 +185,8 @@ namespace hyperelastic
        *materials,
        *elasticity,
        system->free_dofs(),
-       timer});
+       timer,
+       region_densities()});
     reporters = {stepping.get(), postprocessor.get()};
     if (contact_reporter)
       reporters.push_back(contact_reporter.get());
@@ -205,6 +206,21 @@ namespace hyperelastic
     linear_solver.set_symmetric(elasticity->is_conservative());
     formulation->configure_linear_solver(
       linear_solver, dof_handler, mapping, *materials, pressure_dofs);
+  }
+
+  template <int dim>
+  std::vector<double>
+  Problem<dim>::region_densities() const
+  {
+    std::vector<double> densities;
+    if (parameters.regions.empty())
+      return densities;
+    densities.push_back(parameters.time_integration.density);
+    for (const RegionParameters &region : parameters.regions)
+      densities.push_back(region.own_density
+                            ? region.density
+                            : parameters.time_integration.density);
+    return densities;
   }
 
   template <int dim>

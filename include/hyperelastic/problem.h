@@ -171,6 +171,9 @@ namespace hyperelastic
     /// The output writers (and a restart's checkpoint).
     void
     setup_output();
+    /// The density of each region (region 0 first); empty without regions.
+    std::vector<double>
+    region_densities() const;
 
     void
     solve_all_load_steps();

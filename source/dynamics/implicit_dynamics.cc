@@ -31,10 +31,23 @@ namespace hyperelastic
   ImplicitDynamics<dim>::initialize(const VectorType &u)
   {
     const auto &dof_handler = context.dof_handler;
-    auto        term        = std::make_unique<InertiaTerm<dim>>(dof_handler,
+    // Regions of their own density: the density of each cell.
+    std::vector<double> cell_density;
+    if (!context.region_densities.empty())
+      {
+        cell_density.assign(dof_handler.get_triangulation().n_active_cells(),
+                            parameters.density);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial())
+            cell_density[cell->active_cell_index()] =
+              context.region_densities[context.material.region(
+                cell->active_cell_index())];
+      }
+    auto term = std::make_unique<InertiaTerm<dim>>(dof_handler,
                                                    parameters.density,
-                                                   parameters.lumped_mass);
-    inertia                 = term.get();
+                                                   parameters.lumped_mass,
+                                                   std::move(cell_density));
+    inertia   = term.get();
     context.elasticity.add_term(std::move(term));
     if (parameters.stiffness_damping > 0.)
       {

@@ -64,6 +64,10 @@ namespace hyperelastic
     const dealii::AffineConstraints<double> &homogeneous_constraints;
     /// The run's phase timer (the predictor has a phase of its own).
     dealii::TimerOutput &timer;
+    /// Regions: the mass density of each (region 0, the top-level
+    /// Material's cells, first); empty: 'Time integration/Density'
+    /// everywhere.
+    std::vector<double> region_densities = {};
   };
 
   /// A driver also reports (StepReporter): its columns of a converged step
