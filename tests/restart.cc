@@ -18,6 +18,9 @@
 //       stabilized; the pressures are part of the state): equal rows
 //       (1e-12). (P1-bubble/P1 keeps per-cell bubble guesses that the
 //       checkpoint does not hold: its restart is not bit-identical.)
+//   restart DIM regions        the viscous bar with two regions of their own
+//       models (one viscoelastic with its own Prony series, one elastic):
+//       equal rows (1e-12), energy_region_<k> included;
 //   restart DIM mismatch       a checkpoint restarted with another model and
 //       with another mesh: the input error naming what differs;
 //   restart DIM truncated      the checkpoint cut to half its size (a kill
@@ -292,6 +295,49 @@ namespace
                     1e-12);
   }
 
+  /// The viscous bar with regions: x < 1 a viscoelastic Gent of its own
+  /// Prony series (Region 1), x > 2 an elastic neo-Hookean without history
+  /// (Region 2), the viscous Yeoh between: each region's history is part
+  /// of the state, and points without history write none.
+  template <int dim>
+  void
+  regions(Checker &checker)
+  {
+    const std::string tag   = std::to_string(dim) + "D regions, viscous: ";
+    const std::string whole = folder(dim, "regions_whole");
+    const std::string split = folder(dim, "regions_split");
+    const std::string every =
+      entry("Checkpoint every", "2") + entry("Write VTU", "false");
+    const std::string scene =
+      viscous_bar(dim) +
+      subsection(
+        "Region 1",
+        entry("Cells", "x < 1") +
+          subsection("Material",
+                     entry("Model", "Gent") +
+                       subsection("Gent",
+                                  entry("Shear modulus", "2") +
+                                    entry("Jm", "5")) +
+                       subsection("Viscoelasticity",
+                                  entry("Weights", "2") +
+                                    entry("Relaxation times", "0.3")))) +
+      subsection("Region 2",
+                 entry("Cells", "x > 2") +
+                   subsection("Material",
+                              entry("Model", "neo-Hookean") +
+                                entry("Young's modulus", "3")));
+    run<dim>(scene + output(whole, every));
+    run<dim>(scene + output(split, every), "", 3);
+    run<dim>(scene + output(split, every), split + "/run.checkpoint");
+    checker.at_least(tag + "steps",
+                     lines_of(whole + "/run.csv").size() - 1.,
+                     4.);
+    checker.at_most(tag + "every CSV value (energy_region_<k> included) "
+                          "as without the interruption",
+                    csv_difference(whole + "/run.csv", split + "/run.csv"),
+                    1e-12);
+  }
+
   /// The message of the input error @p text restarted from @p checkpoint
   /// raises (empty if none).
   template <int dim>
@@ -387,6 +433,8 @@ main(int argc, char **argv)
         dim == 2 ? quasi_static<2>(checker) : quasi_static<3>(checker);
       else if (name == "mixed")
         dim == 2 ? mixed<2>(checker) : mixed<3>(checker);
+      else if (name == "regions")
+        dim == 2 ? regions<2>(checker) : regions<3>(checker);
       else if (name == "mismatch")
         dim == 2 ? mismatch<2>(checker) : mismatch<3>(checker);
       else if (name == "truncated")
