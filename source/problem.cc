@@ -6,6 +6,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_simplex_p.h>
 
+#include <hyperelastic/assembly/assembly_tools.h>
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/contact/contact_layer.h>
 #include <hyperelastic/formulation/formulation_registry.h>
@@ -167,9 +168,7 @@ namespace hyperelastic
       add_contact_terms<dim>({parameters.contact,
                               parameters.loading.constants,
                               dof_handler,
-                              // The stiffest region's (the only one's
-                              // without regions).
-                              materials->stiffest_moduli(),
+                              contact_moduli(),
                               parameters.time_integration.dynamic(),
                               pressure_dofs.n_elements() > 0,
                               timer},
@@ -206,6 +205,25 @@ namespace hyperelastic
     linear_solver.set_symmetric(elasticity->is_conservative());
     formulation->configure_linear_solver(
       linear_solver, dof_handler, mapping, *materials, pressure_dofs);
+  }
+
+  template <int dim>
+  LameParameters
+  Problem<dim>::contact_moduli() const
+  {
+    if (parameters.regions.empty())
+      return material->small_strain_moduli();
+    // The regions with a cell at the boundary (where contact acts).
+    std::vector<double> touches(materials->n_regions(), 0.);
+    for (const auto &cell : triangulation->active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        touches[cell_regions(cell->active_cell_index())] = 1.;
+    touches = summed_over_ranks(touches, comm);
+    std::vector<const Material<dim> *> on_boundary;
+    for (unsigned int r = 0; r < touches.size(); ++r)
+      if (touches[r] > 0.)
+        on_boundary.push_back(&materials->model(r));
+    return MaterialRegions<dim>(on_boundary, {}).stiffest_moduli();
   }
 
   template <int dim>

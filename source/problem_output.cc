@@ -72,9 +72,12 @@ namespace hyperelastic
               << ", " << cell_regions.n_cells[r + 1] << " cells";
       }
     if (contact_reporter)
-      pcout << "\n  contact defaults from the stiffest region (mu = "
-            << materials->stiffest_moduli().mu
-            << ", lambda = " << materials->stiffest_moduli().lambda << ")";
+      {
+        const LameParameters contact = contact_moduli();
+        pcout << "\n  contact defaults from the stiffest region at the "
+                 "boundary (mu = "
+              << contact.mu << ", lambda = " << contact.lambda << ")";
+      }
     pcout << std::endl;
   }
 

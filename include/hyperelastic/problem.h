@@ -171,6 +171,11 @@ namespace hyperelastic
     /// The output writers (and a restart's checkpoint).
     void
     setup_output();
+    /// The moduli the automatic contact defaults take: the stiffest of the
+    /// regions with a cell at the boundary (the only material's without
+    /// regions). Collective.
+    LameParameters
+    contact_moduli() const;
     /// The density of each region (region 0 first); empty without regions.
     std::vector<double>
     region_densities() const;
