@@ -62,25 +62,22 @@ namespace hyperelastic
     // Each region's material meets the same checks as the top-level one.
     for (const RegionParameters &region : regions)
       {
-        if (time_integration.dynamic() &&
-            time_integration.stiffness_damping > 0.)
-          reject("Time integration/Stiffness damping",
-                 std::to_string(time_integration.stiffness_damping),
-                 "stiffness damping (the rest stiffness of one material) "
-                 "is not available with regions yet (the scene has '" +
-                   region.name() + "'); use mass damping");
-        if (material.stiffness_warping)
-          reject("Material/Model",
-                 material.model,
-                 "stiffness warping works with one material for the whole "
-                 "mesh (the scene has '" +
-                   region.name() + "')");
+        // Stiffness warping is the formulation of the whole mesh: every
+        // region's model is stiffness warping too (its own rest moduli).
+        if (material.stiffness_warping && !region.material.stiffness_warping)
+          rethrow_in_region(
+            region,
+            "scene entry 'Material/Model' = '" + region.material.model +
+              "': with the top-level 'Material/Model = stiffness warping' "
+              "every region's model is stiffness warping too (each with "
+              "its own elastic constants)");
         check_in_region(region, [&](const MaterialParameters &m) {
-          if (m.stiffness_warping)
+          if (m.stiffness_warping && !material.stiffness_warping)
             reject("Material/Model",
                    m.model,
-                   "stiffness warping works with one material for the "
-                   "whole mesh");
+                   "stiffness warping is the formulation of the whole mesh: "
+                   "it needs the top-level 'Material/Model = stiffness "
+                   "warping' too");
           formulation_kind(problem.formulation)
             .check({problem, m, linear_solver, time_integration});
           check_viscoelasticity(m, load_stepping, time_integration);

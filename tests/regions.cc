@@ -16,10 +16,12 @@
 //
 // Whole: 'Region 1' selecting every cell with the material of a run without
 // regions (the top-level Material then softer and unused) gives that run's
-// summary columns exactly, bit for bit.
+// summary columns exactly, bit for bit; also with stiffness warping (each
+// region's rest stiffness), and in dynamics with stiffness damping and the
+// region's own density.
 //
 // Usage: regions DIM DEGREE box|gmsh displacement|mixed
-//        regions DIM whole
+//        regions DIM whole [warping|dynamic]
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/base/error_handling.h>
@@ -253,9 +255,22 @@ namespace
 
   template <int dim>
   void
-  run_whole(Checker &checker)
+  run_whole(Checker &checker, const std::string &variant)
   {
-    const bool three = dim == 3;
+    const bool three   = dim == 3;
+    const bool warping = variant == "warping";
+    const bool dynamic = variant == "dynamic";
+    // Dynamics: Newmark with stiffness damping; the density 2 is the
+    // top-level one without regions, Region 1's with them.
+    const auto time_integration = [&](const std::string &density) {
+      return dynamic ? subsection("Time integration",
+                                  entry("Scheme", "Newmark") +
+                                    entry("Time step", "0.1") +
+                                    entry("End time", "0.3") +
+                                    entry("Density", density) +
+                                    entry("Stiffness damping", "0.05"))
+                     : std::string();
+    };
     const auto scene = [&](const std::string &material,
                            const std::string &region) {
       return subsection("Problem", entry("Dimension", std::to_string(dim))) +
@@ -281,18 +296,28 @@ namespace
                         entry("Write VTU", "false") +
                           entry("Directory", "regions_output"));
     };
-    const auto elastic = [](const std::string &E) {
+    const auto elastic = [&](const std::string &E) {
       return subsection("Material",
-                        entry("Model", "neo-Hookean") +
+                        entry("Model",
+                              warping ? "stiffness warping" : "neo-Hookean") +
                           entry("Young's modulus", E) +
                           entry("Poisson's ratio", "0.3"));
     };
-    const auto one    = run_scene<dim>(scene(elastic("1"), ""));
-    const auto region = run_scene<dim>(
-      scene(elastic("0.5"),
-            subsection("Region 1", entry("Cells", "x > -1") + elastic("1"))));
+    const auto one =
+      run_scene<dim>(scene(elastic("1"), "") + time_integration("2"));
+    const auto region =
+      run_scene<dim>(scene(elastic("0.5"),
+                           subsection("Region 1",
+                                      entry("Cells", "x > -1") +
+                                        (dynamic ? entry("Density", "2") : "") +
+                                        elastic("1"))) +
+                     time_integration("1"));
     checker.section(std::to_string(dim) +
-                    "D: Region 1 = the whole mesh against one material");
+                    "D: Region 1 = the whole mesh against one material" +
+                    (warping ? ", stiffness warping" : "") +
+                    (dynamic ? ", Newmark with stiffness damping and the "
+                               "region's density"
+                             : ""));
     checker.is_true("the same number of steps",
                     one->summaries().size() == region->summaries().size());
     unsigned int compared = 0, different = 0;
@@ -333,14 +358,16 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool whole = argc == 3 && std::string(argv[2]) == "whole";
+  const bool                               whole =
+    (argc == 3 || argc == 4) && std::string(argv[2]) == "whole";
   if (argc != 5 && !whole)
     {
       std::cerr << "usage: regions DIM DEGREE box|gmsh displacement|mixed\n"
-                   "       regions DIM whole\n";
+                   "       regions DIM whole [warping|dynamic]\n";
       return 2;
     }
-  const int dim = std::stoi(argv[1]);
+  const std::string variant = whole && argc == 4 ? argv[3] : "";
+  const int         dim     = std::stoi(argv[1]);
   Checker   checker(dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
                   0);
   const int status = run_and_report(
@@ -348,9 +375,9 @@ main(int argc, char *argv[])
       if (whole)
         {
           if (dim == 2)
-            run_whole<2>(checker);
+            run_whole<2>(checker, variant);
           else
-            run_whole<3>(checker);
+            run_whole<3>(checker, variant);
           return;
         }
       const int  degree  = std::stoi(argv[2]);

@@ -51,10 +51,10 @@ namespace hyperelastic
     context.elasticity.add_term(std::move(term));
     if (parameters.stiffness_damping > 0.)
       {
-        auto damping = std::make_unique<StiffnessDampingTerm<dim>>(
-          dof_handler,
-          context.mapping,
-          context.material.top().small_strain_moduli());
+        auto damping =
+          std::make_unique<StiffnessDampingTerm<dim>>(dof_handler,
+                                                      context.mapping,
+                                                      context.material);
         stiffness_damping = damping.get();
         context.elasticity.add_term(std::move(damping));
       }

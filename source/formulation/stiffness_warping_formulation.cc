@@ -33,10 +33,9 @@ namespace hyperelastic
                     const dealii::Mapping<dim>    &mapping,
                     const MaterialRegions<dim>    &material) const override
       {
-        // One material for the whole mesh (a scene check).
         return std::make_unique<WarpedAssembler<dim>>(dof_handler,
                                                       mapping,
-                                                      material.top());
+                                                      material);
       }
 
       bool
