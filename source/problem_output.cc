@@ -41,9 +41,19 @@ namespace hyperelastic
     if (pcout.is_active())
       for (const StepReporter<dim> *reporter : reporters)
         reporter->print_header(pcout.get_stream());
-    const std::string warning = formulation->warning(*material);
-    if (!warning.empty())
-      pcout << warning << std::endl;
+    // Without regions the top-level material; with them each region that
+    // has cells.
+    for (unsigned int r = 0; r < materials->n_regions(); ++r)
+      if (r > 0 || parameters.regions.empty() || cell_regions.n_cells[0] > 0)
+        {
+          const std::string warning = formulation->warning(materials->model(r));
+          if (!warning.empty())
+            pcout << (parameters.regions.empty()
+                        ? std::string()
+                        : (r == 0 ? std::string("top-level Material: ")
+                                  : parameters.regions[r - 1].name() + ": "))
+                  << warning << std::endl;
+        }
   }
 
   template <int dim>
