@@ -26,18 +26,18 @@ namespace hyperelastic
   /// All subsections of a scene.
   struct Parameters
   {
-    ProblemParameters  problem;
-    MeshParameters     mesh;
-    MaterialParameters material;
+    ProblemParameters         problem;
+    MeshParameters            mesh;
+    MaterialParameters        material;
+    LoadingParameters         loading;
+    NewtonParameters          newton;
+    LoadSteppingParameters    load_stepping;
+    TimeIntegrationParameters time_integration;
+    ContactParameters         contact;
+    LinearSolverParameters    linear_solver;
+    OutputParameters          output;
     /// Region 1 ... Region 8: the regions the scene uses, in order.
     std::vector<RegionParameters> regions;
-    LoadingParameters             loading;
-    NewtonParameters              newton;
-    LoadSteppingParameters        load_stepping;
-    TimeIntegrationParameters     time_integration;
-    ContactParameters             contact;
-    LinearSolverParameters        linear_solver;
-    OutputParameters              output;
     /// `hyperelastic --restart CHECKPOINT scene.prm`: the checkpoint the
     /// run continues from (not a scene entry; empty: from the start).
     std::string restart_checkpoint;

@@ -10,15 +10,15 @@ namespace hyperelastic
   using namespace dealii;
 
   template <int dim>
-  Motion<dim>::Motion(const DoFHandler<dim>  &dof_handler,
-                      const Mapping<dim>     &mapping,
+  Motion<dim>::Motion(const DoFHandler<dim> &dof_handler,
+                      const Mapping<dim>    &mapping,
                       const InertiaTerm<dim> &inertia)
       : dof_handler(dof_handler)
       , inertia(inertia)
   {
-    const FiniteElement<dim> &fe = dof_handler.get_fe();
-    const auto     &unit         = fe.base_element(0).get_unit_support_points();
-    const IndexSet &owned        = dof_handler.locally_owned_dofs();
+    const FiniteElement<dim> &fe    = dof_handler.get_fe();
+    const auto               &unit  = fe.base_element(0).get_unit_support_points();
+    const IndexSet           &owned = dof_handler.locally_owned_dofs();
     std::vector<types::global_dof_index> dofs(fe.dofs_per_cell);
     std::set<types::global_dof_index>    seen;
     for (const auto &cell : dof_handler.active_cell_iterators())

@@ -13,14 +13,14 @@ namespace hyperelastic
   {
     switch (scheme)
       {
-      case TimeScheme::backward_euler:
-        return "backward Euler";
-      case TimeScheme::newmark:
-        return "Newmark";
-      case TimeScheme::midpoint:
-        return "implicit midpoint";
-      default:
-        return "quasi-static";
+        case TimeScheme::backward_euler:
+          return "backward Euler";
+        case TimeScheme::newmark:
+          return "Newmark";
+        case TimeScheme::midpoint:
+          return "implicit midpoint";
+        default:
+          return "quasi-static";
       }
   }
 
@@ -39,8 +39,7 @@ namespace hyperelastic
       "= 1/4, gamma = 1/2), second order, conserves the energy of a linear "
       "problem. 'implicit midpoint': second order, conserves linear and "
       "angular momentum (the equations are solved at t_n + h/2, where the "
-      "loads and prescribed displacements are evaluated). In dynamics t in "
-      "every expression is the physical time, each "
+      "loads and prescribed displacements are evaluated). In dynamics t in every expression is the physical time, each "
       "time step minimises an incremental potential (inertia + strain energy "
       "- work of the loads), so the line search, the J > 0 filter and the "
       "cut-back (halving the time step, restored after easy steps) carry "
@@ -103,20 +102,19 @@ namespace hyperelastic
   {
     prm.enter_subsection("Time integration");
     const std::string s = prm.get("Scheme");
-    scheme              = s == "backward Euler" ? TimeScheme::backward_euler
-                          : s == "Newmark"      ? TimeScheme::newmark
-                          : s == "implicit midpoint" ? TimeScheme::midpoint
-                                                     : TimeScheme::quasi_static;
-    density             = get_finite(prm, "Time integration", "Density");
-    time_step           = get_finite(prm, "Time integration", "Time step");
-    end_time            = get_finite(prm, "Time integration", "End time");
-    initial_velocity    = split_expressions(prm.get("Initial velocity"));
-    lumped_mass         = prm.get("Mass") == "lumped";
-    mass_damping        = get_finite(prm, "Time integration", "Mass damping");
-    stiffness_damping =
-      get_finite(prm, "Time integration", "Stiffness damping");
-    output_every   = prm.get_integer("Output every");
-    linearize_once = prm.get_bool("Linearize once per step");
+    scheme = s == "backward Euler" ? TimeScheme::backward_euler :
+             s == "Newmark"        ? TimeScheme::newmark :
+             s == "implicit midpoint" ? TimeScheme::midpoint :
+                                        TimeScheme::quasi_static;
+    density   = get_finite(prm, "Time integration", "Density");
+    time_step = get_finite(prm, "Time integration", "Time step");
+    end_time  = get_finite(prm, "Time integration", "End time");
+    initial_velocity  = split_expressions(prm.get("Initial velocity"));
+    lumped_mass       = prm.get("Mass") == "lumped";
+    mass_damping      = get_finite(prm, "Time integration", "Mass damping");
+    stiffness_damping = get_finite(prm, "Time integration", "Stiffness damping");
+    output_every      = prm.get_integer("Output every");
+    linearize_once    = prm.get_bool("Linearize once per step");
     prm.leave_subsection();
     if (!dynamic())
       return;

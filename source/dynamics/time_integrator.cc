@@ -69,7 +69,8 @@ namespace hyperelastic
                               VectorType       &v,
                               VectorType       &a) const
   {
-    if (scheme == TimeScheme::backward_euler || scheme == TimeScheme::midpoint)
+    if (scheme == TimeScheme::backward_euler ||
+        scheme == TimeScheme::midpoint)
       {
         // v = (u - u_n) / h (midpoint: 2 (u - u_n) / h - v_n), a = (v -
         // v_n) / h.
