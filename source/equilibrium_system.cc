@@ -153,10 +153,9 @@ namespace hyperelastic
 
   template <int dim>
   void
-  EquilibriumSystem<dim>::solve_linearization(
-    const double        forcing,
-    const bool          soften_predictor,
-    LinearizationSolve &solve)
+  EquilibriumSystem<dim>::solve_linearization(const double forcing,
+                                              const bool   soften_predictor,
+                                              LinearizationSolve &solve)
   {
     {
       TimerOutput::Scope scope(parts.timer, "preconditioner setup");
@@ -180,8 +179,7 @@ namespace hyperelastic
     if (soften_predictor)
       {
         unsigned int extension_iterations = 0;
-        const bool   softened =
-          soften_inverting_predictor(extension_iterations);
+        const bool softened = soften_inverting_predictor(extension_iterations);
         solve.linear_iterations += extension_iterations;
         solve.softened_predictor = softened;
       }
@@ -234,7 +232,7 @@ namespace hyperelastic
     {
       TimerOutput::Scope scope(parts.timer, "assembly");
       LameParameters     zero_poisson;
-      zero_poisson.mu = parts.material.small_strain_moduli().mu;
+      zero_poisson.mu = parts.material.top().small_strain_moduli().mu;
       extension.reinit(tangent);
       assemble_rest_system(parts.dof_handler,
                            parts.mapping,
@@ -357,7 +355,7 @@ namespace hyperelastic
                                              internal_force,
                                              external_force);
     noise      = force_size.round_off;
-    residual = internal_force;
+    residual   = internal_force;
     residual -= external_force;
     VectorType free_residual = residual;
     homogeneous_constraints.set_zero(free_residual);

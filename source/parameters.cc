@@ -23,6 +23,7 @@ namespace hyperelastic
     ProblemParameters::declare(prm);
     MeshParameters::declare(prm);
     MaterialParameters::declare(prm);
+    RegionParameters::declare(prm);
     LoadingParameters::declare(prm);
     NewtonParameters::declare(prm);
     LoadSteppingParameters::declare(prm);
@@ -38,6 +39,7 @@ namespace hyperelastic
     problem.parse(prm);
     mesh.parse(prm, scene_folder);
     material.parse(prm);
+    regions = RegionParameters::parse_all(prm);
     loading.parse(prm);
     newton.parse(prm);
     load_stepping.parse(prm);
@@ -57,6 +59,31 @@ namespace hyperelastic
     resolve_formulation(problem, material);
     formulation_kind(problem.formulation)
       .check({problem, material, linear_solver, time_integration});
+    // Each region's material meets the same checks as the top-level one.
+    for (const RegionParameters &region : regions)
+      {
+        // Stiffness warping is the formulation of the whole mesh: every
+        // region's model is stiffness warping too (its own rest moduli).
+        if (material.stiffness_warping && !region.material.stiffness_warping)
+          rethrow_in_region(
+            region,
+            "scene entry 'Material/Model' = '" + region.material.model +
+              "': with the top-level 'Material/Model = stiffness warping' "
+              "every region's model is stiffness warping too (each with "
+              "its own elastic constants)");
+        check_in_region(region, [&](const MaterialParameters &m) {
+          if (m.stiffness_warping && !material.stiffness_warping)
+            reject("Material/Model",
+                   m.model,
+                   "stiffness warping is the formulation of the whole mesh: "
+                   "it needs the top-level 'Material/Model = stiffness "
+                   "warping' too");
+          formulation_kind(problem.formulation)
+            .check({problem, m, linear_solver, time_integration});
+          check_viscoelasticity(m, load_stepping, time_integration);
+          check_inverted_elements(newton, m);
+        });
+      }
     check_arc_length(load_stepping, time_integration, contact, problem);
     output.check_checkpoints(load_stepping, time_integration);
     check_viscoelasticity(material, load_stepping, time_integration);

@@ -6,6 +6,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_simplex_p.h>
 
+#include <hyperelastic/assembly/assembly_tools.h>
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/contact/contact_layer.h>
 #include <hyperelastic/formulation/formulation_registry.h>
@@ -61,7 +62,7 @@ namespace hyperelastic
     if (is_set_up)
       return;
     is_set_up = true;
-    TimerOutput::Scope scope(timer, "mesh and setup");
+    TimerOutput::Scope                 scope(timer, "mesh and setup");
     const std::set<types::boundary_id> mesh_ids = setup_mesh();
     // The stages after the mesh, each from the end of the one before.
     Timer      stage_timer;
@@ -70,7 +71,16 @@ namespace hyperelastic
       stage_timer.restart();
     };
 
-    material = create_material<dim>(parameters.material);
+    material     = create_material<dim>(parameters.material);
+    cell_regions = assign_cell_regions(*triangulation, parameters.regions);
+    std::vector<const Material<dim> *> models{material.get()};
+    for (const RegionParameters &region : parameters.regions)
+      {
+        region_models.push_back(create_material<dim>(region.material));
+        models.push_back(region_models.back().get());
+      }
+    materials =
+      std::make_unique<MaterialRegions<dim>>(models, cell_regions.of_cell);
     boundary_conditions =
       std::make_unique<BoundaryConditions<dim>>(parameters.loading, mesh_ids);
     if (load_editor)
@@ -88,10 +98,10 @@ namespace hyperelastic
     elasticity = std::make_unique<ElasticityOperator<dim>>(
       dof_handler,
       mapping,
-      *material,
+      *materials,
       *boundary_conditions,
       parameters.problem.fast_p1_assembly,
-      formulation->material_part(dof_handler, mapping, *material));
+      formulation->material_part(dof_handler, mapping, *materials));
     end_stage("operator");
     setup_stepping(pressure_dofs);
     setup_output();
@@ -105,15 +115,16 @@ namespace hyperelastic
   {
     MeshStatistics mesh_stats;
     const auto     mesh_ids =
-      Utilities::MPI::n_mpi_processes(comm) == 1 ?
-        create_serial_mesh(parameters.mesh,
-                           static_cast<SerialTriangulation<dim> &>(
-                             *triangulation),
-                           &mesh_stats) :
-        create_mesh(parameters.mesh,
-                    static_cast<parallel::fullydistributed::Triangulation<dim>
-                                  &>(*triangulation),
-                    &mesh_stats);
+      Utilities::MPI::n_mpi_processes(comm) == 1
+            ? create_serial_mesh(parameters.mesh,
+                             static_cast<SerialTriangulation<dim> &>(
+                               *triangulation),
+                             &mesh_stats)
+            : create_mesh(
+            parameters.mesh,
+            static_cast<parallel::fullydistributed::Triangulation<dim> &>(
+              *triangulation),
+            &mesh_stats);
     setup_stages = {{"read", mesh_stats.read_time},
                     {"order", mesh_stats.order_time},
                     {"check", mesh_stats.check_time},
@@ -141,7 +152,7 @@ namespace hyperelastic
                                              parameters.material.model,
                                              dof_handler,
                                              mapping,
-                                             *material,
+                                             *materials,
                                              *boundary_conditions,
                                              *formulation,
                                              linear_solver,
@@ -157,7 +168,7 @@ namespace hyperelastic
       add_contact_terms<dim>({parameters.contact,
                               parameters.loading.constants,
                               dof_handler,
-                              material->small_strain_moduli(),
+                              contact_moduli(),
                               parameters.time_integration.dynamic(),
                               pressure_dofs.n_elements() > 0,
                               timer},
@@ -170,10 +181,11 @@ namespace hyperelastic
        parameters.material.viscoelasticity.quasi_static_duration,
        dof_handler,
        mapping,
-       *material,
+       *materials,
        *elasticity,
        system->free_dofs(),
-       timer});
+       timer,
+       region_densities()});
     reporters = {stepping.get(), postprocessor.get()};
     if (contact_reporter)
       reporters.push_back(contact_reporter.get());
@@ -192,7 +204,41 @@ namespace hyperelastic
     // A load without a potential makes the tangent non-symmetric.
     linear_solver.set_symmetric(elasticity->is_conservative());
     formulation->configure_linear_solver(
-      linear_solver, dof_handler, mapping, *material, pressure_dofs);
+      linear_solver, dof_handler, mapping, *materials, pressure_dofs);
+  }
+
+  template <int dim>
+  LameParameters
+  Problem<dim>::contact_moduli() const
+  {
+    if (parameters.regions.empty())
+      return material->small_strain_moduli();
+    // The regions with a cell at the boundary (where contact acts).
+    std::vector<double> touches(materials->n_regions(), 0.);
+    for (const auto &cell : triangulation->active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        touches[cell_regions(cell->active_cell_index())] = 1.;
+    touches = summed_over_ranks(touches, comm);
+    std::vector<const Material<dim> *> on_boundary;
+    for (unsigned int r = 0; r < touches.size(); ++r)
+      if (touches[r] > 0.)
+        on_boundary.push_back(&materials->model(r));
+    return MaterialRegions<dim>(on_boundary, {}).stiffest_moduli();
+  }
+
+  template <int dim>
+  std::vector<double>
+  Problem<dim>::region_densities() const
+  {
+    std::vector<double> densities;
+    if (parameters.regions.empty())
+      return densities;
+    densities.push_back(parameters.time_integration.density);
+    for (const RegionParameters &region : parameters.regions)
+      densities.push_back(region.own_density
+                            ? region.density
+                            : parameters.time_integration.density);
+    return densities;
   }
 
   template <int dim>
@@ -202,7 +248,17 @@ namespace hyperelastic
     const SurfaceFormat surface_format = parameters.output.surface_format;
     if (parameters.output.write_vtu || parameters.output.write_hdf5 ||
         surface_format == SurfaceFormat::ply)
-      material3d = material->three_dimensional_twin();
+      {
+        material3d = material->three_dimensional_twin();
+        std::vector<const Material<3> *> twins{material3d.get()};
+        for (const auto &model : region_models)
+          {
+            region_models3d.push_back(model->three_dimensional_twin());
+            twins.push_back(region_models3d.back().get());
+          }
+        materials3d =
+          std::make_unique<MaterialRegions<3>>(materials->with_models(twins));
+      }
     if (!parameters.restart_checkpoint.empty())
       read_checkpoint();
     writer = std::make_unique<OutputWriter<dim>>(
@@ -213,11 +269,11 @@ namespace hyperelastic
         writer->resume_xdmf_entries(resumed_xdmf);
       }
     if (surface_format != SurfaceFormat::none)
-      surface = std::make_unique<SurfaceWriter<dim>>(
-        dof_handler,
-        surface_format,
-        parameters.output.directory,
-        parameters.output.base_name);
+      surface =
+        std::make_unique<SurfaceWriter<dim>>(dof_handler,
+                                             surface_format,
+                                             parameters.output.directory,
+                                             parameters.output.base_name);
   }
 
   // ------------------------------------------------------------- results
@@ -236,10 +292,10 @@ namespace hyperelastic
     s.backtracks        = result.backtracks();
     if (parameters.linear_solver.type == LinearSolverType::cg_amg)
       s.amg_setups = linear_solver.n_preconditioner_setups();
-    s.newton_history    = result.history;
-    s.residual          = result.history.back().residual;
+    s.newton_history = result.history;
+    s.residual       = result.history.back().residual;
     s.energy = elasticity->total_energy(system->solution(), s.load_factor);
-    s.min_J          = system->converged_min_J();
+    s.min_J  = system->converged_min_J();
     s.inverted_cells = system->converged_inverted_cells();
     const ReportedState state{system->solution(),
                               system->residual_forces(),
@@ -249,6 +305,18 @@ namespace hyperelastic
     // Arc length: where the path became unstable.
     if (parameters.load_stepping.method == LoadControl::arc_length)
       s.more.push_back({"stability", result.stability});
+    // Regions: the stored energy of each (the top-level Material's cells
+    // are region 0).
+    if (!parameters.regions.empty())
+      {
+        const std::vector<double> energies =
+          elasticity->region_energies(system->solution());
+        for (unsigned int r = 0; r < energies.size(); ++r)
+          s.more.push_back(
+            {"energy_region_" +
+               std::to_string(r == 0 ? 0 : parameters.regions[r - 1].number),
+             energies[r]});
+      }
 
     scope.stop();
     if (writes_frames() && stepping->writes_fields(step.step, s.load_factor))

@@ -37,6 +37,9 @@ namespace hyperelastic
                : std::string("quasi-static"))
          << "\n"
          << "MPI ranks: " << Utilities::MPI::n_mpi_processes(comm) << "\n";
+    for (unsigned int r = 0; r < parameters.regions.size(); ++r)
+      text << parameters.regions[r].name() << ": " << region_models[r]->name()
+           << ", " << cell_regions.n_cells[r + 1] << " cells\n";
     return text.str();
   }
 

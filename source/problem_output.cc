@@ -25,6 +25,7 @@ namespace hyperelastic
           << " (mu = " << material->small_strain_moduli().mu
           << ", lambda = " << material->small_strain_moduli().lambda << ")\n"
           << "linear solver: " << linear_solver.description() << std::endl;
+    print_regions();
     if (!elasticity->energy_terms().empty())
       {
         pcout << "loads:";
@@ -40,9 +41,54 @@ namespace hyperelastic
     if (pcout.is_active())
       for (const StepReporter<dim> *reporter : reporters)
         reporter->print_header(pcout.get_stream());
-    const std::string warning = formulation->warning(*material);
-    if (!warning.empty())
-      pcout << warning << std::endl;
+    // Without regions the top-level material; with them each region that
+    // has cells.
+    for (unsigned int r = 0; r < materials->n_regions(); ++r)
+      if (r > 0 || parameters.regions.empty() || cell_regions.n_cells[0] > 0)
+        {
+          const std::string warning = formulation->warning(materials->model(r));
+          if (!warning.empty())
+            pcout << (parameters.regions.empty()
+                        ? std::string()
+                        : (r == 0 ? std::string("top-level Material: ")
+                                  : parameters.regions[r - 1].name() + ": "))
+                  << warning << std::endl;
+        }
+  }
+
+  template <int dim>
+  void
+  Problem<dim>::print_regions() const
+  {
+    if (parameters.regions.empty())
+      return;
+    const auto moduli = [](const Material<dim> &m) {
+      std::ostringstream text;
+      text << " (mu = " << m.small_strain_moduli().mu
+           << ", lambda = " << m.small_strain_moduli().lambda << ")";
+      return text.str();
+    };
+    pcout << "regions: region 0 (top-level Material, "
+          << parameters.material.model << ") " << cell_regions.n_cells[0]
+          << " cells";
+    for (unsigned int r = 0; r < parameters.regions.size(); ++r)
+      {
+        const RegionParameters &region = parameters.regions[r];
+        pcout << "\n  " << region.name() << " ("
+              << (region.material_id >= 0
+                    ? "Material id " + std::to_string(region.material_id)
+                    : "Cells '" + region.cells + "'")
+              << "): " << region.material.model << moduli(*region_models[r])
+              << ", " << cell_regions.n_cells[r + 1] << " cells";
+      }
+    if (contact_reporter)
+      {
+        const LameParameters contact = contact_moduli();
+        pcout << "\n  contact defaults from the stiffest region at the "
+                 "boundary (mu = "
+              << contact.mu << ", lambda = " << contact.lambda << ")";
+      }
+    pcout << std::endl;
   }
 
   template <int dim>
@@ -59,8 +105,8 @@ namespace hyperelastic
     step_summaries.push_back(summary);
     if (step_observer)
       step_observer(summary);
-    pcout << "   converged in " << result.iterations()
-          << " Newton iterations (" << result.linear_iterations() << " linear";
+    pcout << "   converged in " << result.iterations() << " Newton iterations ("
+          << result.linear_iterations() << " linear";
     if (summary.backtracks > 0)
       pcout << ", " << summary.backtracks << " line-search backtracks";
     pcout << "); energy " << std::setprecision(10) << summary.energy
@@ -98,7 +144,19 @@ namespace hyperelastic
     CellFields         fields;
     if (material3d)
       fields = compute_cell_fields(
-        dof_handler, mapping, *material, *material3d, system->solution());
+        dof_handler, mapping, *materials, *materials3d, system->solution());
+    if (!parameters.regions.empty())
+      {
+        // The number k of 'Region k' (0: the top-level Material).
+        fields.region.reinit(triangulation->n_active_cells());
+        for (const auto &cell : triangulation->active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const unsigned int r = cell_regions(cell->active_cell_index());
+              fields.region[cell->active_cell_index()] =
+                r == 0 ? 0. : parameters.regions[r - 1].number;
+            }
+      }
     if (surface)
       surface->write(n_frames,
                      system->load_factor(),

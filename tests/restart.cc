@@ -18,6 +18,9 @@
 //       stabilized; the pressures are part of the state): equal rows
 //       (1e-12). (P1-bubble/P1 keeps per-cell bubble guesses that the
 //       checkpoint does not hold: its restart is not bit-identical.)
+//   restart DIM regions        the viscous bar with two regions of their own
+//       models (one viscoelastic with its own Prony series, one elastic):
+//       equal rows (1e-12), energy_region_<k> included;
 //   restart DIM mismatch       a checkpoint restarted with another model and
 //       with another mesh: the input error naming what differs;
 //   restart DIM truncated      the checkpoint cut to half its size (a kill
@@ -55,9 +58,9 @@ namespace
   /// the run stops after that step.
   template <int dim>
   void
-  run(const std::string  &text,
-      const std::string  &checkpoint = "",
-      const unsigned int  kill_after = 0)
+  run(const std::string &text,
+      const std::string &checkpoint = "",
+      const unsigned int kill_after = 0)
   {
     Parameters parameters;
     parameters.read_from_string(text);
@@ -108,9 +111,9 @@ namespace
               return 1.;
             const double p = std::stod(u), q = std::stod(v);
             if (p != q)
-              worst = std::max(worst,
-                               std::abs(p - q) /
-                                 std::max(std::abs(p), std::abs(q)));
+              worst =
+                std::max(worst,
+                         std::abs(p - q) / std::max(std::abs(p), std::abs(q)));
           }
       }
     return worst;
@@ -140,7 +143,8 @@ namespace
     return subsection("Problem", entry("Dimension", std::to_string(dim))) +
            subsection("Mesh",
                       entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                        entry("Upper corner", three ? "2, 0.5, 0.5" : "2, 0.5") +
+                        entry("Upper corner",
+                              three ? "2, 0.5, 0.5" : "2, 0.5") +
                         entry("Subdivisions", three ? "8, 2, 2" : "16, 4")) +
            subsection("Material",
                       entry("Model", "neo-Hookean") +
@@ -148,7 +152,10 @@ namespace
                         entry("Poisson's ratio", "0.3")) +
            subsection("Loading",
                       entry("Body force", three ? "0; -2; 0" : "0; -2")) +
-           dirichlet(1, 0, three ? "x, y, z" : "x, y", three ? "0; 0; 0" : "0; 0") +
+           dirichlet(1,
+                     0,
+                     three ? "x, y, z" : "x, y",
+                     three ? "0; 0; 0" : "0; 0") +
            subsection("Time integration",
                       entry("Scheme", "Newmark") + entry("Time step", "0.05") +
                         entry("End time", end));
@@ -158,7 +165,8 @@ namespace
   /// t in [0, 0.3] and held), Newton limited to 4 iterations: the first
   /// step is cut back.
   std::string
-  viscous_bar(const int dim, const std::string &model = "Yeoh",
+  viscous_bar(const int          dim,
+              const std::string &model        = "Yeoh",
               const std::string &subdivisions = "")
   {
     const bool three = dim == 3;
@@ -170,23 +178,22 @@ namespace
                               !subdivisions.empty() ? subdivisions
                               : three               ? "3, 1, 1"
                                                     : "6, 2")) +
-           subsection("Material",
-                      entry("Model", model) +
-                        subsection(model,
-                                   entry(model == "Yeoh" ? "C10" : "Shear modulus",
-                                         model == "Yeoh" ? "0.5" : "1") +
-                                     entry(model == "Yeoh" ? "Bulk modulus"
-                                                           : "Jm",
-                                           "5")) +
-                        subsection("Viscoelasticity",
-                                   entry("Weights", "1, 0.5") +
-                                     entry("Relaxation times", "0.1, 0.8"))) +
+           subsection(
+             "Material",
+             entry("Model", model) +
+               subsection(model,
+                          entry(model == "Yeoh" ? "C10" : "Shear modulus",
+                                model == "Yeoh" ? "0.5" : "1") +
+                            entry(model == "Yeoh" ? "Bulk modulus" : "Jm",
+                                  "5")) +
+               subsection("Viscoelasticity",
+                          entry("Weights", "1, 0.5") +
+                            entry("Relaxation times", "0.1, 0.8"))) +
            subsection("Loading", entry("Number of load steps", "4")) +
            subsection("Newton", entry("Max iterations", "4")) +
            dirichlet(1, 0, "x", "0") +
            dirichlet(2, 1, "x", "1.8*min(1, t/0.3)") +
-           dirichlet(3, 2, "y", "0") +
-           (three ? dirichlet(5, 4, "z", "0") : "");
+           dirichlet(3, 2, "y", "0") + (three ? dirichlet(5, 4, "z", "0") : "");
   }
 
   template <int dim>
@@ -234,8 +241,8 @@ namespace
     run<dim>(viscous_bar(dim) + output(whole, every));
     const auto rows = lines_of(whole + "/run.csv");
     // The cut-backs: the column cut_backs of the rows.
-    const auto header = rows.at(0);
-    unsigned int index = 0;
+    const auto   header = rows.at(0);
+    unsigned int index  = 0;
     {
       std::istringstream names(header);
       unsigned int       k = 0;
@@ -292,6 +299,49 @@ namespace
                     1e-12);
   }
 
+  /// The viscous bar with regions: x < 1 a viscoelastic Gent of its own
+  /// Prony series (Region 1), x > 2 an elastic neo-Hookean without history
+  /// (Region 2), the viscous Yeoh between: each region's history is part
+  /// of the state, and points without history write none.
+  template <int dim>
+  void
+  regions(Checker &checker)
+  {
+    const std::string tag   = std::to_string(dim) + "D regions, viscous: ";
+    const std::string whole = folder(dim, "regions_whole");
+    const std::string split = folder(dim, "regions_split");
+    const std::string every =
+      entry("Checkpoint every", "2") + entry("Write VTU", "false");
+    const std::string scene =
+      viscous_bar(dim) +
+      subsection("Region 1",
+                 entry("Cells", "x < 1") +
+                   subsection("Material",
+                              entry("Model", "Gent") +
+                                subsection("Gent",
+                                           entry("Shear modulus", "2") +
+                                             entry("Jm", "5")) +
+                                subsection("Viscoelasticity",
+                                           entry("Weights", "2") +
+                                             entry("Relaxation times",
+                                                   "0.3")))) +
+      subsection("Region 2",
+                 entry("Cells", "x > 2") +
+                   subsection("Material",
+                              entry("Model", "neo-Hookean") +
+                                entry("Young's modulus", "3")));
+    run<dim>(scene + output(whole, every));
+    run<dim>(scene + output(split, every), "", 3);
+    run<dim>(scene + output(split, every), split + "/run.checkpoint");
+    checker.at_least(tag + "steps",
+                     lines_of(whole + "/run.csv").size() - 1.,
+                     4.);
+    checker.at_most(tag + "every CSV value (energy_region_<k> included) "
+                          "as without the interruption",
+                    csv_difference(whole + "/run.csv", split + "/run.csv"),
+                    1e-12);
+  }
+
   /// The message of the input error @p text restarted from @p checkpoint
   /// raises (empty if none).
   template <int dim>
@@ -318,8 +368,9 @@ namespace
     const std::string every =
       entry("Checkpoint every", "1") + entry("Write VTU", "false");
     run<dim>(viscous_bar(dim) + output(dir, every), "", 1);
-    const std::string model = restart_error<dim>(
-      viscous_bar(dim, "Gent") + output(dir, every), dir + "/run.checkpoint");
+    const std::string model =
+      restart_error<dim>(viscous_bar(dim, "Gent") + output(dir, every),
+                         dir + "/run.checkpoint");
     checker.note(model);
     checker.is_true(tag + "another model is an input error naming the model",
                     model.find("does not fit this scene: its model is 'Yeoh "
@@ -349,8 +400,7 @@ namespace
     const std::string file = split + "/run.checkpoint";
     MPI_Barrier(MPI_COMM_WORLD);
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::filesystem::resize_file(file,
-                                   std::filesystem::file_size(file) / 2);
+      std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
     MPI_Barrier(MPI_COMM_WORLD);
     run<dim>(viscous_bar(dim) + output(split, every), file);
     checker.at_most(tag + "restarted from the previous checkpoint: every "
@@ -387,6 +437,8 @@ main(int argc, char **argv)
         dim == 2 ? quasi_static<2>(checker) : quasi_static<3>(checker);
       else if (name == "mixed")
         dim == 2 ? mixed<2>(checker) : mixed<3>(checker);
+      else if (name == "regions")
+        dim == 2 ? regions<2>(checker) : regions<3>(checker);
       else if (name == "mismatch")
         dim == 2 ? mismatch<2>(checker) : mismatch<3>(checker);
       else if (name == "truncated")

@@ -15,6 +15,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/assembly/material_regions.h>
 #include <hyperelastic/dynamics/time_stepping.h>
 #include <hyperelastic/formulation/formulation.h>
 #include <hyperelastic/loads/boundary_conditions.h>
@@ -27,7 +28,6 @@
 #include <hyperelastic/solvers/unheld_rigid_motions.h>
 
 #include <memory>
-
 #include <string>
 
 namespace hyperelastic
@@ -47,7 +47,8 @@ namespace hyperelastic
       const std::string             &material_model;
       const dealii::DoFHandler<dim> &dof_handler;
       const dealii::Mapping<dim>    &mapping;
-      const Material<dim>           &material;
+      /// The model of each cell.
+      const MaterialRegions<dim>     material;
       const BoundaryConditions<dim> &boundary_conditions;
       const Formulation<dim>        &formulation;
       LinearSolver                  &linear_solver;
@@ -234,9 +235,9 @@ namespace hyperelastic
     double     current_load_factor = 0.;
     double     step_length         = 1.; ///< of the last evaluated trial
     /// Running maxima of the force and displacement norms (Newton's scales).
-    double                           force_scale    = 0.;
+    double force_scale = 0.;
     /// The load terms' ForceSize at the last force assembly.
-    ForceSize force_size;
+    ForceSize                        force_size;
     double                           solution_size  = 0.;
     double                           min_J          = 1.;
     dealii::types::global_cell_index inverted_cells = 0;

@@ -9,6 +9,7 @@
 #include <hyperelastic/formulation/formulation_parameters.h>
 #include <hyperelastic/loads/loading_parameters.h>
 #include <hyperelastic/materials/material_parameters.h>
+#include <hyperelastic/materials/region_parameters.h>
 #include <hyperelastic/mesh/mesh_parameters.h>
 #include <hyperelastic/output/output_parameters.h>
 #include <hyperelastic/solvers/linear_solver_parameters.h>
@@ -16,6 +17,7 @@
 #include <hyperelastic/solvers/newton_parameters.h>
 
 #include <string>
+#include <vector>
 
 namespace hyperelastic
 {
@@ -34,6 +36,8 @@ namespace hyperelastic
     ContactParameters         contact;
     LinearSolverParameters    linear_solver;
     OutputParameters          output;
+    /// Region 1 ... Region 8: the regions the scene uses, in order.
+    std::vector<RegionParameters> regions;
     /// `hyperelastic --restart CHECKPOINT scene.prm`: the checkpoint the
     /// run continues from (not a scene entry; empty: from the start).
     std::string restart_checkpoint;

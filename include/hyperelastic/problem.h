@@ -15,11 +15,13 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/assembly/material_regions.h>
 #include <hyperelastic/dynamics/time_stepping.h>
 #include <hyperelastic/equilibrium_system.h>
 #include <hyperelastic/formulation/formulation.h>
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/materials/material.h>
+#include <hyperelastic/mesh/cell_regions.h>
 #include <hyperelastic/output/output.h>
 #include <hyperelastic/output/step_postprocessor.h>
 #include <hyperelastic/output/step_reporter.h>
@@ -169,18 +171,29 @@ namespace hyperelastic
     /// The output writers (and a restart's checkpoint).
     void
     setup_output();
+    /// The moduli the automatic contact defaults take: the stiffest of the
+    /// regions with a cell at the boundary (the only material's without
+    /// regions). Collective.
+    LameParameters
+    contact_moduli() const;
+    /// The density of each region (region 0 first); empty without regions.
+    std::vector<double>
+    region_densities() const;
 
     void
     solve_all_load_steps();
     /// After converged step @p step: the summary, its row, the checkpoint,
     /// the observer and the progress lines; @p start: the run's start.
     void
-    report_step(const LoadStep                                     &step,
-                const NewtonResult                                 &result,
+    report_step(const LoadStep                              &step,
+                const NewtonResult                          &result,
                 const std::chrono::steady_clock::time_point &start);
     /// The run header: element, size, ranks, material, solver, loads.
     void
     print_header() const;
+    /// The regions' lines of the run header (model and cells of each).
+    void
+    print_regions() const;
     StepSummary<dim>
     summarize(const LoadStep &step, const NewtonResult &newton_result);
     /// Whether output frames are written (VTU or a surface sequence).
@@ -214,33 +227,41 @@ namespace hyperelastic
     dealii::ConditionalOStream pcout;
     dealii::TimerOutput        timer;
 
-    const std::unique_ptr<Formulation<dim>>                formulation;
+    const std::unique_ptr<Formulation<dim>> formulation;
     /// Fully distributed on several ranks; on one, a SerialTriangulation
     /// (built in about half the time, the same cells in the same order).
-    std::unique_ptr<dealii::Triangulation<dim>>            triangulation;
-    std::vector<std::pair<std::string, double>>            setup_stages;
-    bool                                                   is_set_up = false;
-    const dealii::FESystem<dim>                            fe;
-    const dealii::MappingFE<dim>                           mapping;
-    dealii::DoFHandler<dim>                                dof_handler;
+    std::unique_ptr<dealii::Triangulation<dim>> triangulation;
+    std::vector<std::pair<std::string, double>> setup_stages;
+    bool                                        is_set_up = false;
+    const dealii::FESystem<dim>                 fe;
+    const dealii::MappingFE<dim>                mapping;
+    dealii::DoFHandler<dim>                     dof_handler;
 
+    /// The top-level Material (region 0).
     std::unique_ptr<Material<dim>> material;
-    /// The same model in 3D, for the plane-strain stress in the output
-    /// (null without VTU output).
+    /// The models of Region 1 ... (parameters.regions' order), the region
+    /// of each cell, and both as the material of every cell.
+    std::vector<std::unique_ptr<Material<dim>>> region_models;
+    CellRegions                                 cell_regions;
+    std::unique_ptr<MaterialRegions<dim>>       materials;
+    /// The same models in 3D, for the plane-strain stress in the output
+    /// (null without VTU output), region 0 first.
     std::unique_ptr<Material<3>>                   material3d;
+    std::vector<std::unique_ptr<Material<3>>>      region_models3d;
+    std::unique_ptr<MaterialRegions<3>>            materials3d;
     std::unique_ptr<BoundaryConditions<dim>>       boundary_conditions;
     std::function<void(BoundaryConditions<dim> &)> load_editor;
     std::function<void(const StepSummary<dim> &)>  step_observer;
     std::unique_ptr<ElasticityOperator<dim>>       elasticity;
     std::unique_ptr<TimeStepping<dim>>             stepping;
     std::unique_ptr<EquilibriumSystem<dim>>        system;
-    std::unique_ptr<StepPostprocessor<dim>> postprocessor;
+    std::unique_ptr<StepPostprocessor<dim>>        postprocessor;
     /// What the contact terms report (null without contact).
     std::unique_ptr<StepReporter<dim>> contact_reporter;
     /// The reporters of a step, in the order of their columns: the driver,
     /// the post-processor, then contact's.
-    std::vector<StepReporter<dim> *> reporters;
-    std::unique_ptr<OutputWriter<dim>>      writer;
+    std::vector<StepReporter<dim> *>   reporters;
+    std::unique_ptr<OutputWriter<dim>> writer;
     /// 'Output/Surface format' (null for none).
     std::unique_ptr<SurfaceWriter<dim>> surface;
     /// Output frames written so far (the next surface file's number).
@@ -250,8 +271,8 @@ namespace hyperelastic
     std::unique_ptr<ResumePoint>                resume_point;
     std::vector<std::pair<double, std::string>> resumed_series;
     std::string                                 resumed_xdmf;
-    LinearSolver                            linear_solver;
-    NewtonSolver                            newton;
+    LinearSolver                                linear_solver;
+    NewtonSolver                                newton;
 
     std::vector<StepSummary<dim>> step_summaries;
   };

@@ -15,7 +15,7 @@ namespace hyperelastic
   ElasticityOperator<dim>::ElasticityOperator(
     const DoFHandler<dim>          &dof_handler,
     const Mapping<dim>             &mapping,
-    const Material<dim>            &material,
+    const MaterialRegions<dim>     &material,
     const BoundaryConditions<dim>  &boundary_conditions,
     const bool                      fast_p1,
     std::unique_ptr<Assembler<dim>> material_part)

@@ -53,7 +53,7 @@ namespace hyperelastic
   template <int dim>
   GenericAssembler<dim>::GenericAssembler(const DoFHandler<dim> &dof_handler,
                                           const Mapping<dim>    &mapping,
-                                          const Material<dim>   &material)
+                                          const MaterialRegions<dim> &material)
       : dof_handler(dof_handler)
       , mapping(mapping)
       , material(material)
@@ -192,6 +192,20 @@ namespace hyperelastic
                                     energy,
                                     round_off.local_energy_magnitude(),
                                     dof_handler.get_communicator());
+  }
+
+  template <int dim>
+  std::vector<double>
+  GenericAssembler<dim>::region_energies(const VectorType &u) const
+  {
+    std::vector<double> energy(material.n_regions(), 0.);
+    for_each_cell(u, [&](CellData &data) {
+      for (unsigned int q = 0; q < data.F.size(); ++q)
+        energy[material.region(data.cell)] +=
+          materials(data.cell, q).energy_density(data.F[q]) *
+          data.values.JxW(q);
+    });
+    return summed_over_ranks(energy, dof_handler.get_communicator());
   }
 
   template <int dim>

@@ -26,6 +26,36 @@ namespace hyperelastic
     {
       return element == MixedElement::stabilized ? 2 : 3;
     }
+
+    /// The volumetric-isochoric split of each region's model (null where a
+    /// model has none).
+    template <int dim>
+    std::vector<std::unique_ptr<VolumetricSplit<dim>>>
+    region_splits(const MaterialRegions<dim> &material)
+    {
+      std::vector<std::unique_ptr<VolumetricSplit<dim>>> splits;
+      for (unsigned int r = 0; r < material.n_regions(); ++r)
+        splits.push_back(material.model(r).volumetric_split());
+      return splits;
+    }
+
+    /// The regions with their models' isochoric parts.
+    template <int dim>
+    MaterialRegions<dim>
+    isochoric_parts(
+      const MaterialRegions<dim>                               &material,
+      const std::vector<std::unique_ptr<VolumetricSplit<dim>>> &splits)
+    {
+      std::vector<const Material<dim> *> parts;
+      for (unsigned int r = 0; r < splits.size(); ++r)
+        {
+          AssertThrow(splits[r] != nullptr,
+                      ExcMessage("the mixed formulation needs a model with a "
+                                 "volumetric-isochoric split"));
+          parts.push_back(splits[r]->isochoric.get());
+        }
+      return material.with_models(parts);
+    }
   } // namespace
 
   /// A cell's values, shape data and local system. Local unknowns: the
@@ -131,25 +161,24 @@ namespace hyperelastic
   };
 
   template <int dim>
-  MixedAssembler<dim>::MixedAssembler(const DoFHandler<dim> &dof_handler,
-                                      const Mapping<dim>    &mapping,
-                                      const Material<dim>   &material,
-                                      const MixedElement     element)
+  MixedAssembler<dim>::MixedAssembler(const DoFHandler<dim>      &dof_handler,
+                                      const Mapping<dim>         &mapping,
+                                      const MaterialRegions<dim> &material,
+                                      const MixedElement          element)
       : dof_handler(dof_handler)
       , mapping(mapping)
       , material(material)
-      , split(material.volumetric_split())
+      , split(region_splits(material))
       , element(element)
       , quadrature(QGaussSimplex<dim>(quadrature_points_1d(element)))
-      , isochoric(split ? *split->isochoric : material,
+      , isochoric(isochoric_parts(material, split),
                   dof_handler,
                   mapping,
                   quadrature)
-      , inverse_shear_modulus(1. / material.small_strain_moduli().mu)
   {
-    AssertThrow(split != nullptr,
-                ExcMessage("the mixed formulation needs a model with a "
-                           "volumetric-isochoric split"));
+    for (unsigned int r = 0; r < material.n_regions(); ++r)
+      inverse_shear_modulus.push_back(
+        1. / material.model(r).small_strain_moduli().mu);
     AssertThrow(dof_handler.get_fe().n_components() == dim + 1,
                 ExcMessage("the mixed formulation needs dim + 1 components"));
   }
@@ -169,8 +198,8 @@ namespace hyperelastic
     const bool         bubble_only = output == CellOutput::bubble_block;
     const unsigned int first       = bubble_only ? data.n : 0;
     const unsigned int n_total     = data.n + data.n_bubble;
-    const auto        &vol         = split->volumetric;
-    data.residual                  = 0.;
+    const auto &vol = split[material.region(data.cell_index)]->volumetric;
+    data.residual   = 0.;
     if (with_matrix)
       data.matrix = 0.;
     data.energy    = 0.;
@@ -278,6 +307,8 @@ namespace hyperelastic
   {
     // -1/(2 mu) int (p - pbar)^2: residual -1/mu int (p - pbar) q, matrix
     // -1/mu (int psi_i psi_j - |T| psibar_i psibar_j).
+    const double inverse_shear_modulus =
+      this->inverse_shear_modulus[material.region(data.cell_index)];
     std::vector<double> psi_mean(data.n, 0.);
     for (unsigned int q = 0; q < quadrature.size(); ++q)
       {
@@ -442,7 +473,7 @@ namespace hyperelastic
                                        VectorType       &internal) const
   {
     internal               = 0.;
-    const double   modulus = material.small_strain_moduli().mu;
+    const double   modulus = material.largest_shear_modulus();
     double         squared = 0.;
     Vector<double> cell_residual(dof_handler.get_fe().dofs_per_cell);
     for_each_cell(u, false, TangentProjection::none, [&](CellData &data) {
@@ -507,6 +538,17 @@ namespace hyperelastic
     });
     return reduce_energy_evaluation(
       min_J, with_energy, energy, magnitude, dof_handler.get_communicator());
+  }
+
+  template <int dim>
+  std::vector<double>
+  MixedAssembler<dim>::region_energies(const VectorType &u) const
+  {
+    std::vector<double> energy(material.n_regions(), 0.);
+    for_each_cell(u, false, TangentProjection::none, [&](CellData &data) {
+      energy[material.region(data.cell_index)] += data.energy;
+    });
+    return summed_over_ranks(energy, dof_handler.get_communicator());
   }
 
   template <int dim>

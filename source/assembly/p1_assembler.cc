@@ -27,8 +27,8 @@ namespace hyperelastic
   } // namespace
 
   template <int dim>
-  P1Assembler<dim>::P1Assembler(const DoFHandler<dim> &dof_handler,
-                                const Material<dim>   &material)
+  P1Assembler<dim>::P1Assembler(const DoFHandler<dim>      &dof_handler,
+                                const MaterialRegions<dim> &material)
       : dof_handler(dof_handler)
       , material(material)
       , materials(material, dof_handler)
@@ -490,6 +490,21 @@ namespace hyperelastic
                                     energy,
                                     round_off.local_energy_magnitude(),
                                     dof_handler.get_communicator());
+  }
+
+  template <int dim>
+  std::vector<double>
+  P1Assembler<dim>::region_energies(const VectorType &u) const
+  {
+    const double       *U = ghosted_values(u);
+    std::vector<double> energy(material.n_regions(), 0.);
+    for (const Cell &c : cells)
+      if (c.owned)
+        energy[material.region(c.active_index)] +=
+          materials(c.active_index, 0)
+            .energy_density(deformation_gradient(c, U)) *
+          c.volume;
+    return summed_over_ranks(energy, dof_handler.get_communicator());
   }
 
   template <int dim>

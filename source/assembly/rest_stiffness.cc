@@ -17,9 +17,34 @@ namespace hyperelastic
                           const LameParameters  &moduli,
                           MatrixType            &stiffness)
   {
-    const MPI_Comm comm  = dof_handler.get_communicator();
-    const IndexSet owned = dof_handler.locally_owned_dofs();
-    const IndexSet relevant =
+    const auto linear = create_material<dim>("linear elastic", moduli);
+    assemble_rest_stiffness(dof_handler,
+                            mapping,
+                            MaterialRegions<dim>(*linear),
+                            stiffness);
+  }
+
+  template <int dim>
+  void
+  assemble_rest_stiffness(const DoFHandler<dim>      &dof_handler,
+                          const Mapping<dim>         &mapping,
+                          const MaterialRegions<dim> &materials,
+                          MatrixType                 &stiffness)
+  {
+    // Linear elasticity with each region's rest moduli.
+    std::vector<std::unique_ptr<Material<dim>>> linear;
+    std::vector<const Material<dim> *>          models;
+    for (unsigned int r = 0; r < materials.n_regions(); ++r)
+      {
+        linear.push_back(
+          create_material<dim>("linear elastic",
+                               materials.model(r).small_strain_moduli()));
+        models.push_back(linear.back().get());
+      }
+    const MaterialRegions<dim> rest  = materials.with_models(models);
+    const MPI_Comm             comm  = dof_handler.get_communicator();
+    const IndexSet             owned = dof_handler.locally_owned_dofs();
+    const IndexSet             relevant =
       DoFTools::extract_locally_relevant_dofs(dof_handler);
     DynamicSparsityPattern dsp(relevant);
     DoFTools::make_sparsity_pattern(dof_handler, dsp);
@@ -29,7 +54,10 @@ namespace hyperelastic
     VectorType                rhs(owned, comm);
     AffineConstraints<double> none;
     none.close();
-    assemble_rest_system(dof_handler, mapping, moduli, none, stiffness, rhs);
+    const VectorType at_rest(
+      owned, DoFTools::extract_locally_relevant_dofs(dof_handler), comm);
+    GenericAssembler<dim>(dof_handler, mapping, rest)
+      .system(at_rest, none, TangentProjection::none, stiffness, rhs);
   }
 
   template <int dim>
@@ -41,7 +69,7 @@ namespace hyperelastic
                        MatrixType                      &matrix,
                        VectorType                      &rhs)
   {
-    const auto linear = create_material<dim>("linear elastic", moduli);
+    const auto       linear = create_material<dim>("linear elastic", moduli);
     const VectorType rest(dof_handler.locally_owned_dofs(),
                           DoFTools::extract_locally_relevant_dofs(dof_handler),
                           dof_handler.get_communicator());
@@ -58,6 +86,16 @@ namespace hyperelastic
   assemble_rest_stiffness<3>(const DoFHandler<3> &,
                              const Mapping<3> &,
                              const LameParameters &,
+                             MatrixType &);
+  template void
+  assemble_rest_stiffness<2>(const DoFHandler<2> &,
+                             const Mapping<2> &,
+                             const MaterialRegions<2> &,
+                             MatrixType &);
+  template void
+  assemble_rest_stiffness<3>(const DoFHandler<3> &,
+                             const Mapping<3> &,
+                             const MaterialRegions<3> &,
                              MatrixType &);
   template void
   assemble_rest_system<2>(const DoFHandler<2> &,

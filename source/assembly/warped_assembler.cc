@@ -16,9 +16,9 @@ namespace hyperelastic
   using namespace dealii;
 
   template <int dim>
-  WarpedAssembler<dim>::WarpedAssembler(const DoFHandler<dim> &dof_handler,
-                                        const Mapping<dim>    &mapping,
-                                        const Material<dim>   &material)
+  WarpedAssembler<dim>::WarpedAssembler(const DoFHandler<dim>      &dof_handler,
+                                        const Mapping<dim>         &mapping,
+                                        const MaterialRegions<dim> &material)
       : dof_handler(dof_handler)
       , corotational(dof_handler, mapping, material)
   {
@@ -48,10 +48,7 @@ namespace hyperelastic
           }
 
     MatrixType stiffness;
-    assemble_rest_stiffness(dof_handler,
-                            mapping,
-                            material.small_strain_moduli(),
-                            stiffness);
+    assemble_rest_stiffness(dof_handler, mapping, material, stiffness);
 
     // The owned vertices in the order of their dofs, and their rows.
     const IndexSet owned = dof_handler.locally_owned_dofs();

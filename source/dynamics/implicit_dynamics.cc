@@ -31,15 +31,30 @@ namespace hyperelastic
   ImplicitDynamics<dim>::initialize(const VectorType &u)
   {
     const auto &dof_handler = context.dof_handler;
-    auto        term        = std::make_unique<InertiaTerm<dim>>(dof_handler,
+    // Regions of their own density: the density of each cell.
+    std::vector<double> cell_density;
+    if (!context.region_densities.empty())
+      {
+        cell_density.assign(dof_handler.get_triangulation().n_active_cells(),
+                            parameters.density);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial())
+            cell_density[cell->active_cell_index()] =
+              context.region_densities[context.material.region(
+                cell->active_cell_index())];
+      }
+    auto term = std::make_unique<InertiaTerm<dim>>(dof_handler,
                                                    parameters.density,
-                                                   parameters.lumped_mass);
-    inertia                 = term.get();
+                                                   parameters.lumped_mass,
+                                                   std::move(cell_density));
+    inertia   = term.get();
     context.elasticity.add_term(std::move(term));
     if (parameters.stiffness_damping > 0.)
       {
-        auto damping = std::make_unique<StiffnessDampingTerm<dim>>(
-          dof_handler, context.mapping, context.material.small_strain_moduli());
+        auto damping =
+          std::make_unique<StiffnessDampingTerm<dim>>(dof_handler,
+                                                      context.mapping,
+                                                      context.material);
         stiffness_damping = damping.get();
         context.elasticity.add_term(std::move(damping));
       }
@@ -49,13 +64,12 @@ namespace hyperelastic
       std::make_unique<Motion<dim>>(dof_handler, context.mapping, *inertia);
     const dealii::IndexSet &owned = dof_handler.locally_owned_dofs();
     const MPI_Comm          comm  = dof_handler.get_communicator();
-    for (VectorType *v :
-         {&velocity,
-          &acceleration,
-          &new_velocity,
-          &new_acceleration,
-          &scratch,
-          &correction})
+    for (VectorType *v : {&velocity,
+                          &acceleration,
+                          &new_velocity,
+                          &new_acceleration,
+                          &scratch,
+                          &correction})
       v->reinit(owned, comm);
     if (!parameters.initial_velocity.empty())
       {
@@ -212,8 +226,7 @@ namespace hyperelastic
             inertia->solve_mass(scratch,
                                 context.homogeneous_constraints,
                                 correction);
-            new_acceleration.add(-integrator->end_force_weight(),
-                                 correction);
+            new_acceleration.add(-integrator->end_force_weight(), correction);
           }
       }
     velocity.swap(new_velocity);

@@ -18,13 +18,15 @@ namespace hyperelastic
   template <int dim>
   InertiaTerm<dim>::InertiaTerm(const DoFHandler<dim> &dof_handler,
                                 const double           density,
-                                const bool             lumped)
+                                const bool             lumped,
+                                std::vector<double>    cell_density)
       : dof_handler(dof_handler)
       , density(density)
+      , cell_density(std::move(cell_density))
       , lumped(lumped)
   {
-    const FiniteElement<dim> &base  = dof_handler.get_fe().base_element(0);
-    const unsigned int        n     = base.dofs_per_cell;
+    const FiniteElement<dim> &base = dof_handler.get_fe().base_element(0);
+    const unsigned int        n    = base.dofs_per_cell;
     const QGaussSimplex<dim>  rule(base.degree + 1);
     reference_mass.reinit(n, n);
     for (unsigned int q = 0; q < rule.size(); ++q)
@@ -64,8 +66,8 @@ namespace hyperelastic
   void
   InertiaTerm<dim>::for_each_cell(Worker &&worker) const
   {
-    const FiniteElement<dim> &fe = dof_handler.get_fe();
-    const unsigned int        n  = fe.dofs_per_cell;
+    const FiniteElement<dim>            &fe = dof_handler.get_fe();
+    const unsigned int                   n  = fe.dofs_per_cell;
     std::vector<types::global_dof_index> dofs(n);
     FullMatrix<double>                   cell_mass(n, n);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -73,19 +75,21 @@ namespace hyperelastic
         {
           cell->get_dof_indices(dofs);
           const double scale =
-            density * std::abs(simplex_measure<dim>([&](const unsigned int k)
-                                                      -> const Point<dim> & {
-                                 return cell->vertex(k);
-                               }).det);
+            (cell_density.empty() ? density
+                                  : cell_density[cell->active_cell_index()]) *
+            std::abs(simplex_measure<dim>([&](const unsigned int k)
+                                            -> const Point<dim> & {
+                       return cell->vertex(k);
+                     }).det);
           for (unsigned int i = 0; i < n; ++i)
             {
               const auto [ci, ki] = fe.system_to_component_index(i);
               for (unsigned int j = 0; j < n; ++j)
                 {
                   const auto [cj, kj] = fe.system_to_component_index(j);
-                  cell_mass(i, j) = (ci == cj && ci < dim) ?
-                                      scale * reference_mass(ki, kj) :
-                                      0.;
+                  cell_mass(i, j)     = (ci == cj && ci < dim)
+                                          ? scale * reference_mass(ki, kj)
+                                          : 0.;
                 }
             }
           worker(dofs, cell_mass);
@@ -168,8 +172,8 @@ namespace hyperelastic
                                   const double,
                                   TangentProjection,
                                   const AffineConstraints<double> &constraints,
-                                       MatrixType                      &matrix,
-                                       VectorType                      &rhs) const
+                                  MatrixType                      &matrix,
+                                  VectorType                      &rhs) const
   {
     FullMatrix<double> scaled;
     for_each_cell([&](const auto &dofs, const FullMatrix<double> &m) {
@@ -184,12 +188,13 @@ namespace hyperelastic
   InertiaTerm<dim>::energy(const VectorType &u, const double) const
   {
     double sum = 0.;
-    for_each_cell_product(
-      u,
-      &target,
-      [&](const auto &, const Vector<double> &d, const Vector<double> &Md) {
-        sum += 0.5 * c * (d * Md);
-      });
+    for_each_cell_product(u,
+                          &target,
+                          [&](const auto &,
+                              const Vector<double> &d,
+                              const Vector<double> &Md) {
+                            sum += 0.5 * c * (d * Md);
+                          });
     return Utilities::MPI::sum(sum, dof_handler.get_communicator());
   }
 
@@ -198,10 +203,13 @@ namespace hyperelastic
   InertiaTerm<dim>::mass_product(const VectorType &v, VectorType &product) const
   {
     product = 0.;
-    for_each_cell_product(
-      v, nullptr, [&](const auto &dofs, const auto &, const Vector<double> &Mv) {
-        product.add(dofs, Mv);
-      });
+    for_each_cell_product(v,
+                          nullptr,
+                          [&](const auto &dofs,
+                              const auto &,
+                              const Vector<double> &Mv) {
+                            product.add(dofs, Mv);
+                          });
     product.compress(VectorOperation::add);
   }
 

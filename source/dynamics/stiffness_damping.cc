@@ -8,11 +8,11 @@ namespace hyperelastic
 
   template <int dim>
   StiffnessDampingTerm<dim>::StiffnessDampingTerm(
-    const DoFHandler<dim> &dof_handler,
-    const Mapping<dim>    &mapping,
-    const LameParameters  &moduli)
+    const DoFHandler<dim>      &dof_handler,
+    const Mapping<dim>         &mapping,
+    const MaterialRegions<dim> &materials)
   {
-    assemble_rest_stiffness(dof_handler, mapping, moduli, stiffness);
+    assemble_rest_stiffness(dof_handler, mapping, materials, stiffness);
     const IndexSet owned = dof_handler.locally_owned_dofs();
     for (VectorType *v : {&zero, &difference, &product})
       v->reinit(owned, dof_handler.get_communicator());

@@ -27,10 +27,10 @@ namespace hyperelastic
   template <int dim>
   void
   DisplacementFormulation<dim>::configure_linear_solver(
-    LinearSolver &solver,
+    LinearSolver                  &solver,
     const dealii::DoFHandler<dim> &dof_handler,
     const dealii::Mapping<dim> &,
-    const Material<dim> &,
+    const MaterialRegions<dim> &,
     const dealii::IndexSet &) const
   {
     if (two_level)

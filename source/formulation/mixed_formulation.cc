@@ -56,9 +56,9 @@ namespace hyperelastic
       }
 
       std::unique_ptr<Assembler<dim>>
-      material_part(const DoFHandler<dim> &dof_handler,
-                    const Mapping<dim>    &mapping,
-                    const Material<dim>   &material) const override
+      material_part(const DoFHandler<dim>      &dof_handler,
+                    const Mapping<dim>         &mapping,
+                    const MaterialRegions<dim> &material) const override
       {
         return std::make_unique<MixedAssembler<dim>>(dof_handler,
                                                      mapping,
@@ -100,19 +100,21 @@ namespace hyperelastic
       }
 
       void
-      configure_linear_solver(LinearSolver          &solver,
-                              const DoFHandler<dim> &dof_handler,
-                              const Mapping<dim>    &mapping,
-                              const Material<dim>   &material,
-                              const IndexSet        &pressure) const override
+      configure_linear_solver(LinearSolver               &solver,
+                              const DoFHandler<dim>      &dof_handler,
+                              const Mapping<dim>         &mapping,
+                              const MaterialRegions<dim> &material,
+                              const IndexSet &pressure) const override
       {
         if (!block_preconditioner)
           return;
         // The lumped pressure mass int psi_i dV on the owned pressure
-        // unknowns, scaled by 1/mu: the Schur complement's diagonal.
-        const FiniteElement<dim> &fe    = dof_handler.get_fe();
-        const IndexSet           &owned = dof_handler.locally_owned_dofs();
-        const MPI_Comm            comm  = dof_handler.get_communicator();
+        // unknowns, scaled by 1/mu: the Schur complement's diagonal. With
+        // regions each cell's mass is scaled by its own 1/mu.
+        const bool                regions = !material.cell_regions().empty();
+        const FiniteElement<dim> &fe      = dof_handler.get_fe();
+        const IndexSet           &owned   = dof_handler.locally_owned_dofs();
+        const MPI_Comm            comm    = dof_handler.get_communicator();
         VectorType                mass(owned, comm);
         const QGaussSimplex<dim>  quadrature(2);
         FEValues<dim>             values(mapping,
@@ -131,10 +133,14 @@ namespace hyperelastic
                 for (unsigned int i = 0; i < dofs.size(); ++i)
                   if (fe.system_to_component_index(i).first == dim)
                     cell_mass[i] += values.shape_value(i, q) * values.JxW(q);
+              if (regions)
+                cell_mass /=
+                  material(cell->active_cell_index()).small_strain_moduli().mu;
               mass.add(dofs, cell_mass);
             }
         mass.compress(VectorOperation::add);
-        const double        mu = material.small_strain_moduli().mu;
+        const double mu =
+          regions ? 1. : material.top().small_strain_moduli().mu;
         std::vector<double> shear_schur;
         for (const auto i : owned)
           if (pressure.is_element(i))

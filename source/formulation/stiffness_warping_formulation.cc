@@ -31,7 +31,7 @@ namespace hyperelastic
       std::unique_ptr<Assembler<dim>>
       material_part(const dealii::DoFHandler<dim> &dof_handler,
                     const dealii::Mapping<dim>    &mapping,
-                    const Material<dim>           &material) const override
+                    const MaterialRegions<dim>    &material) const override
       {
         return std::make_unique<WarpedAssembler<dim>>(dof_handler,
                                                       mapping,

@@ -16,8 +16,8 @@ namespace hyperelastic
   CellFields
   compute_cell_fields(const DoFHandler<dim>               &dof_handler,
                       const Mapping<dim>                  &mapping,
-                      const Material<dim>                 &material,
-                      const Material<3>                   &material3d,
+                      const MaterialRegions<dim>          &material,
+                      const MaterialRegions<3>            &material3d,
                       const TrilinosWrappers::MPI::Vector &u)
   {
     const unsigned int n_cells =
@@ -32,21 +32,31 @@ namespace hyperelastic
     const QGaussSimplex<dim> quadrature(dof_handler.get_fe().degree);
     // A model whose constants vary with position (fibre directions) is
     // evaluated at each quadrature point, with its 3D twin there.
-    const bool                       by_point = material.depends_on_position();
+    bool any_by_point = false;
+    for (unsigned int r = 0; r < material.n_regions(); ++r)
+      any_by_point = any_by_point || material.model(r).depends_on_position();
     FEValues<dim>                    values(mapping,
                          dof_handler.get_fe(),
                          quadrature,
                          update_values | update_gradients | update_JxW_values |
-                           (by_point ? update_quadrature_points
-                                                        : update_default));
+                           (any_by_point ? update_quadrature_points
+                                                            : update_default));
     const FEValuesExtractors::Vector displacement(0);
     std::vector<Tensor<2, dim>>      grad_u(quadrature.size());
     // Mixed formulation: the stress is P_iso + p J F^-T and the energy
     // density psi_iso + p (J - 1) - U*(p) (= psi where p = U'(J)), from the
     // pressure unknown; the full model may have kappa = infinity.
-    const bool mixed   = dof_handler.get_fe().n_components() > dim;
-    auto       split   = mixed ? material.volumetric_split() : nullptr;
-    auto       split3d = mixed ? material3d.volumetric_split() : nullptr;
+    const bool mixed = dof_handler.get_fe().n_components() > dim;
+    // The splits of each region's model and of its 3D twin.
+    std::vector<std::unique_ptr<VolumetricSplit<dim>>> region_split;
+    std::vector<std::unique_ptr<VolumetricSplit<3>>>   region_split3d;
+    for (unsigned int r = 0; mixed && r < material.n_regions(); ++r)
+      {
+        region_split.push_back(material.model(r).volumetric_split());
+        region_split3d.push_back(material3d.model(r).volumetric_split());
+      }
+    std::unique_ptr<VolumetricSplit<dim>> point_split;
+    std::unique_ptr<VolumetricSplit<3>>   point_split3d;
     // The model (and its 3D twin) at a point of a by_point model.
     std::unique_ptr<Material<dim>>   point_model;
     std::unique_ptr<Material<3>>     point_model3d;
@@ -59,9 +69,15 @@ namespace hyperelastic
           values[displacement].get_function_gradients(u, grad_u);
           if (mixed)
             values[pressure].get_function_values(u, p);
-          const unsigned int index  = cell->active_cell_index();
-          double             volume = 0.;
-          Tensor<2, 3>       sigma;
+          const unsigned int    index      = cell->active_cell_index();
+          const unsigned int    r          = material.region(index);
+          const Material<dim>  &cell_model = material.model(r);
+          const bool            by_point   = cell_model.depends_on_position();
+          VolumetricSplit<dim> *split = mixed ? region_split[r].get() : nullptr;
+          VolumetricSplit<3>   *split3d =
+            mixed ? region_split3d[r].get() : nullptr;
+          double       volume = 0.;
+          Tensor<2, 3> sigma;
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               const double         JxW = values.JxW(q);
@@ -69,17 +85,19 @@ namespace hyperelastic
               if (by_point)
                 {
                   point_model =
-                    material.at_position(values.quadrature_point(q));
+                    cell_model.at_position(values.quadrature_point(q));
                   point_model3d = point_model->three_dimensional_twin();
                   if (mixed)
                     {
-                      split   = point_model->volumetric_split();
-                      split3d = point_model3d->volumetric_split();
+                      point_split   = point_model->volumetric_split();
+                      point_split3d = point_model3d->volumetric_split();
+                      split         = point_split.get();
+                      split3d       = point_split3d.get();
                     }
                 }
-              const Material<dim> &model = by_point ? *point_model : material;
+              const Material<dim> &model = by_point ? *point_model : cell_model;
               const Material<3>   &model3d =
-                by_point ? *point_model3d : material3d;
+                by_point ? *point_model3d : material3d.model(r);
               // Plane strain: the 3D F is diag(F, 1).
               Tensor<2, 3> F3 = unit_symmetric_tensor<3>();
               for (unsigned int i = 0; i < dim; ++i)
@@ -125,13 +143,13 @@ namespace hyperelastic
   template CellFields
   compute_cell_fields<2>(const DoFHandler<2> &,
                          const Mapping<2> &,
-                         const Material<2> &,
-                         const Material<3> &,
+                         const MaterialRegions<2> &,
+                         const MaterialRegions<3> &,
                          const TrilinosWrappers::MPI::Vector &);
   template CellFields
   compute_cell_fields<3>(const DoFHandler<3> &,
                          const Mapping<3> &,
-                         const Material<3> &,
-                         const Material<3> &,
+                         const MaterialRegions<3> &,
+                         const MaterialRegions<3> &,
                          const TrilinosWrappers::MPI::Vector &);
 } // namespace hyperelastic

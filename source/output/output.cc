@@ -56,8 +56,7 @@ namespace hyperelastic
               error = "cannot restart the summary '" + csv_file() +
                       "': it has " +
                       std::to_string(lines.empty() ? 0 : lines.size() - 1) +
-                      " rows, the checkpoint " +
-                      std::to_string(resumed_rows);
+                      " rows, the checkpoint " + std::to_string(resumed_rows);
             else
               {
                 csv.open(csv_file(), std::ios::trunc);
@@ -148,6 +147,10 @@ namespace hyperelastic
         data_out.add_data_vector(fields.cauchy[c],
                                  names[c],
                                  DataOut<dim>::type_cell_data);
+    if (fields.region.size() > 0)
+      data_out.add_data_vector(fields.region,
+                               "region",
+                               DataOut<dim>::type_cell_data);
     Vector<float> rank(dof_handler.get_triangulation().n_active_cells());
     rank = static_cast<float>(Utilities::MPI::this_mpi_process(comm));
     data_out.add_data_vector(rank, "mpi_rank", DataOut<dim>::type_cell_data);

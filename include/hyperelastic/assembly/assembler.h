@@ -43,6 +43,16 @@ namespace hyperelastic
     virtual EnergyEvaluation
     stored_energy(const VectorType &u, bool with_energy) const = 0;
 
+    /// The stored energy int psi(F) dV of each region (0: the top-level
+    /// Material, then the scene's regions), summed over the ranks; empty if
+    /// the material part has no regions to tell apart. Collective.
+    virtual std::vector<double>
+    region_energies(const VectorType &u) const
+    {
+      (void)u;
+      return {};
+    }
+
     /// Whether the internal forces are the gradient of the stored energy
     /// (then the tangent is symmetric). Not so for stiffness warping.
     virtual bool

@@ -7,6 +7,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 
+#include <hyperelastic/assembly/material_regions.h>
 #include <hyperelastic/base/linear_algebra.h>
 #include <hyperelastic/materials/material.h>
 
@@ -29,6 +30,20 @@ namespace hyperelastic
     double min_J = 0.;
   };
 
+  /// @p values summed entry by entry over the ranks of @p comm
+  /// (collective).
+  inline std::vector<double>
+  summed_over_ranks(std::vector<double> values, const MPI_Comm comm)
+  {
+    MPI_Allreduce(MPI_IN_PLACE,
+                  values.data(),
+                  static_cast<int>(values.size()),
+                  MPI_DOUBLE,
+                  MPI_SUM,
+                  comm);
+    return values;
+  }
+
   /// Round-off bookkeeping of one assembly pass. Stress entries are computed
   /// from terms of the size of the moduli (lambda ln J cancels mu F at small
   /// strain), so each carries an error of about eps (|mu| + |lambda|)
@@ -39,8 +54,19 @@ namespace hyperelastic
   public:
     template <int dim>
     explicit RoundOff(const Material<dim> &material)
-        : modulus_scale(std::abs(material.small_strain_moduli().mu) +
-                        std::abs(material.small_strain_moduli().lambda))
+        : RoundOff(material.small_strain_moduli())
+    {
+    }
+
+    /// With regions: the moduli of the stiffest (the largest noise).
+    template <int dim>
+    explicit RoundOff(const MaterialRegions<dim> &materials)
+        : RoundOff(materials.stiffest_moduli())
+    {
+    }
+
+    explicit RoundOff(const LameParameters &moduli)
+        : modulus_scale(std::abs(moduli.mu) + std::abs(moduli.lambda))
     {
     }
 

@@ -11,10 +11,10 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <hyperelastic/assembly/assembler.h>
-#include <hyperelastic/base/tangent_projection_mode.h>
-#include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/assembly/energy_term.h>
 #include <hyperelastic/assembly/term_capabilities.h>
+#include <hyperelastic/base/tangent_projection_mode.h>
+#include <hyperelastic/loads/boundary_conditions.h>
 
 #include <algorithm>
 #include <limits>
@@ -35,7 +35,7 @@ namespace hyperelastic
     /// warping's) replaces both.
     ElasticityOperator(const dealii::DoFHandler<dim>  &dof_handler,
                        const dealii::Mapping<dim>     &mapping,
-                       const Material<dim>            &material,
+                       const MaterialRegions<dim>     &material,
                        const BoundaryConditions<dim>  &boundary_conditions,
                        bool                            fast_p1       = true,
                        std::unique_ptr<Assembler<dim>> material_part = nullptr);
@@ -86,6 +86,13 @@ namespace hyperelastic
       generic->load_history(state, position);
       if (p1)
         p1->load_history(state, position);
+    }
+
+    /// The stored energy of each region (Assembler::region_energies()).
+    std::vector<double>
+    region_energies(const VectorType &u) const
+    {
+      return p1 ? p1->region_energies(u) : generic->region_energies(u);
     }
 
     /// Whether the material part and every load term have a potential: then
@@ -249,9 +256,9 @@ namespace hyperelastic
 
     const dealii::DoFHandler<dim> &dof_handler;
     /// Whether a material part was given (then there is no P1 kernel).
-    const bool                                  replaced;
-    std::unique_ptr<Assembler<dim>>             generic;
-    std::unique_ptr<Assembler<dim>>             p1;
+    const bool                                    replaced;
+    std::unique_ptr<Assembler<dim>>               generic;
+    std::unique_ptr<Assembler<dim>>               p1;
     std::vector<std::unique_ptr<EnergyTerm<dim>>> terms;
     bool                                          has_dead_terms = false;
     bool                                          has_live_terms = false;

@@ -19,7 +19,7 @@ namespace hyperelastic
   public:
     GenericAssembler(const dealii::DoFHandler<dim> &dof_handler,
                      const dealii::Mapping<dim>    &mapping,
-                     const Material<dim>           &material);
+                     const MaterialRegions<dim>    &material);
 
     double
     internal_forces(const VectorType &u, VectorType &internal) const override;
@@ -34,6 +34,9 @@ namespace hyperelastic
 
     EnergyEvaluation
     stored_energy(const VectorType &u, bool with_energy) const override;
+
+    std::vector<double>
+    region_energies(const VectorType &u) const override;
 
     void
     accept_step(const VectorType &u) override;
@@ -57,7 +60,7 @@ namespace hyperelastic
 
     const dealii::DoFHandler<dim> &dof_handler;
     const dealii::Mapping<dim>    &mapping;
-    const Material<dim>           &material;
+    const MaterialRegions<dim>     material;
     /// Exact for P1 (one point) and for the linear-elastic stiffness of P2.
     const dealii::Quadrature<dim> quadrature;
     /// The model at each quadrature point.

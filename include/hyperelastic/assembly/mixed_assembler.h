@@ -45,7 +45,7 @@ namespace hyperelastic
     /// read); the DoFHandler's element is (P_k)^dim x P1.
     MixedAssembler(const dealii::DoFHandler<dim> &dof_handler,
                    const dealii::Mapping<dim>    &mapping,
-                   const Material<dim>           &material,
+                   const MaterialRegions<dim>    &material,
                    MixedElement                   element);
     ~MixedAssembler();
 
@@ -64,6 +64,10 @@ namespace hyperelastic
     /// smallest J.
     EnergyEvaluation
     stored_energy(const VectorType &u, bool with_energy) const override;
+
+    /// Pi(u, p) of each region's cells.
+    std::vector<double>
+    region_energies(const VectorType &u) const override;
 
     /// Every owned cell's points write their state at @p u (ghosted), the
     /// bubble solved (MINI).
@@ -137,16 +141,17 @@ namespace hyperelastic
                  bool              with_matrix,
                  TangentProjection project_tangent) const;
 
-    const dealii::DoFHandler<dim>        &dof_handler;
-    const dealii::Mapping<dim>           &mapping;
-    const Material<dim>                  &material;
-    std::unique_ptr<VolumetricSplit<dim>> split;
-    const MixedElement                    element;
-    const dealii::Quadrature<dim>         quadrature;
+    const dealii::DoFHandler<dim> &dof_handler;
+    const dealii::Mapping<dim>    &mapping;
+    const MaterialRegions<dim>     material;
+    /// The split of each region's model.
+    std::vector<std::unique_ptr<VolumetricSplit<dim>>> split;
+    const MixedElement                                 element;
+    const dealii::Quadrature<dim>                      quadrature;
     /// The isochoric part at each quadrature point.
     const PointMaterials<dim> isochoric;
-    /// 1/mu of the stabilisation (P1/P1).
-    const double inverse_shear_modulus;
+    /// 1/mu of the stabilisation (P1/P1), of each region.
+    std::vector<double> inverse_shear_modulus;
     /// MINI: the last converged bubble of each cell (dim values per active
     /// cell index), the start of its next cell solve: Newton and line-search
     /// states are close to each other, so one or two local iterations do.

@@ -39,7 +39,7 @@ namespace hyperelastic
     /// Precomputes the geometry of the locally owned and ghost cells. The
     /// element must be FE_SimplexP(1)^dim; check usable() afterwards.
     P1Assembler(const dealii::DoFHandler<dim> &dof_handler,
-                const Material<dim>           &material);
+                const MaterialRegions<dim>    &material);
 
     /// False if the dof layout is not the one this assembler relies on (the
     /// dim dofs of a vertex numbered consecutively, contiguous ownership).
@@ -65,6 +65,9 @@ namespace hyperelastic
 
     EnergyEvaluation
     stored_energy(const VectorType &u, bool with_energy) const override;
+
+    std::vector<double>
+    region_energies(const VectorType &u) const override;
 
     /// Every cell this rank sees (its own and its ghosts) writes its
     /// state: both compute the same F.
@@ -145,7 +148,7 @@ namespace hyperelastic
     report(const std::string &error, unsigned int cell) const;
 
     const dealii::DoFHandler<dim> &dof_handler;
-    const Material<dim>           &material;
+    const MaterialRegions<dim>     material;
     /// The model at each cell (one point per P1 cell).
     const PointMaterials<dim>       materials;
     dealii::IndexSet                relevant;

@@ -5,8 +5,8 @@
 // whose state each point holds). Built once, at the assembler's set-up, with
 // the assembler's own quadrature, so that assembly evaluates a pure function
 // of F at each point and never an expression. For every other model nothing
-// is stored and the scene's model is handed out: a scene pays only for the
-// feature it uses.
+// is stored and the cell's model (its region's, assembly/material_regions.h)
+// is handed out: a scene pays only for the feature it uses.
 #pragma once
 
 #include <deal.II/base/mpi.h>
@@ -15,6 +15,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 
+#include <hyperelastic/assembly/material_regions.h>
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/materials/material.h>
 
@@ -30,14 +31,14 @@ namespace hyperelastic
   public:
     /// At the points of @p quadrature mapped by @p mapping, on every cell
     /// this rank sees (locally owned and ghost).
-    PointMaterials(const Material<dim>           &model,
+    PointMaterials(const MaterialRegions<dim>    &regions,
                    const dealii::DoFHandler<dim> &dof_handler,
                    const dealii::Mapping<dim>    &mapping,
                    const dealii::Quadrature<dim> &quadrature)
-        : model(model)
+        : regions(regions)
         , n_points(quadrature.size())
     {
-      if (!per_point(model))
+      if (!regions.any_per_point())
         return;
       dealii::FEValues<dim> values(mapping,
                                    dof_handler.get_fe(),
@@ -46,6 +47,9 @@ namespace hyperelastic
       points.resize(dof_handler.get_triangulation().n_active_cells() *
                     n_points);
       collectively(dof_handler, [&](const auto &cell) {
+        const Material<dim> &model = regions(cell->active_cell_index());
+        if (!per_point(model))
+          return;
         values.reinit(cell);
         for (unsigned int q = 0; q < n_points; ++q)
           points[cell->active_cell_index() * n_points + q] =
@@ -55,16 +59,18 @@ namespace hyperelastic
 
     /// At the centre of every cell this rank sees: the one point of the
     /// P1 rule (the vertex average of a straight simplex).
-    PointMaterials(const Material<dim>           &model,
+    PointMaterials(const MaterialRegions<dim>    &regions,
                    const dealii::DoFHandler<dim> &dof_handler)
-        : model(model)
+        : regions(regions)
         , n_points(1)
     {
-      if (!per_point(model))
+      if (!regions.any_per_point())
         return;
       points.resize(dof_handler.get_triangulation().n_active_cells());
       collectively(dof_handler, [&](const auto &cell) {
-        points[cell->active_cell_index()] = model.at_position(cell->center());
+        const Material<dim> &model = regions(cell->active_cell_index());
+        if (per_point(model))
+          points[cell->active_cell_index()] = model.at_position(cell->center());
       });
     }
 
@@ -73,14 +79,24 @@ namespace hyperelastic
     const Material<dim> &
     operator()(const unsigned int cell, const unsigned int q) const
     {
-      return points.empty() ? model : *points[cell * n_points + q];
+      if (points.empty())
+        return regions(cell);
+      const Material<dim> *point = points[cell * n_points + q].get();
+      return point ? *point : regions(cell);
+    }
+
+    /// The regions' models and the region of each cell.
+    const MaterialRegions<dim> &
+    cell_materials() const
+    {
+      return regions;
     }
 
     /// Whether the points hold history (Material::has_history()).
     bool
     has_history() const
     {
-      return !points.empty() && model.has_history();
+      return !points.empty() && regions.any_history();
     }
 
     /// Every point's next step lasts @p dt (Material::begin_step()).
@@ -98,7 +114,8 @@ namespace hyperelastic
                 const unsigned int    q,
                 const Tensor<2, dim> &F) const
     {
-      points[cell * n_points + q]->accept_step(F);
+      if (const auto &point = points[cell * n_points + q])
+        point->accept_step(F);
     }
 
     /// Appends every point's history to @p state (points in their order:
@@ -108,7 +125,7 @@ namespace hyperelastic
     {
       if (has_history())
         for (const auto &point : points)
-          if (point)
+          if (point && point->has_history())
             point->save_history(state);
     }
 
@@ -118,7 +135,7 @@ namespace hyperelastic
     {
       if (has_history())
         for (const auto &point : points)
-          if (point)
+          if (point && point->has_history())
             point->load_history(state, position);
     }
 
@@ -159,9 +176,10 @@ namespace hyperelastic
         throw InputError(dealii::Utilities::MPI::broadcast(comm, error, first));
     }
 
-    const Material<dim> &model;
-    const unsigned int   n_points;
-    /// Empty unless model.depends_on_position().
+    const MaterialRegions<dim> regions;
+    const unsigned int         n_points;
+    /// Empty unless some region's model is per point; then null at the
+    /// points of the other regions' cells.
     std::vector<std::unique_ptr<Material<dim>>> points;
   };
 } // namespace hyperelastic

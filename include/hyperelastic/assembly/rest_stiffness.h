@@ -10,6 +10,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <hyperelastic/assembly/assembly_tools.h>
+#include <hyperelastic/assembly/material_regions.h>
 #include <hyperelastic/materials/material.h>
 
 namespace hyperelastic
@@ -21,6 +22,17 @@ namespace hyperelastic
   assemble_rest_stiffness(const dealii::DoFHandler<dim> &dof_handler,
                           const dealii::Mapping<dim>    &mapping,
                           const LameParameters          &moduli,
+                          MatrixType                    &stiffness);
+
+  /// K0 of linear elasticity with each cell's small-strain moduli (its
+  /// region's model's, @p materials) into @p stiffness (reinitialised on
+  /// the owned rows; collective). One region: the same matrix as with its
+  /// moduli above.
+  template <int dim>
+  void
+  assemble_rest_stiffness(const dealii::DoFHandler<dim> &dof_handler,
+                          const dealii::Mapping<dim>    &mapping,
+                          const MaterialRegions<dim>    &materials,
                           MatrixType                    &stiffness);
 
   /// K0 condensed with @p constraints into @p matrix (whose sparsity is

@@ -35,11 +35,12 @@ namespace hyperelastic
   class WarpedAssembler : public Assembler<dim>
   {
   public:
-    /// @p material: the scene's model (corotational, whose small-strain
-    /// moduli give the rest stiffness K); it must outlive the assembler.
+    /// @p material: the model of each cell (corotational, whose
+    /// small-strain moduli give the rest stiffness K, each region its own);
+    /// the models must outlive the assembler.
     WarpedAssembler(const dealii::DoFHandler<dim> &dof_handler,
                     const dealii::Mapping<dim>    &mapping,
-                    const Material<dim>           &material);
+                    const MaterialRegions<dim>    &material);
     ~WarpedAssembler() override;
 
     double
@@ -58,6 +59,13 @@ namespace hyperelastic
     /// The corotational energy (see the top of this file) and smallest J.
     EnergyEvaluation
     stored_energy(const VectorType &u, bool with_energy) const override;
+
+    /// The corotational energy of each region's cells (as stored_energy()).
+    std::vector<double>
+    region_energies(const VectorType &u) const override
+    {
+      return corotational.region_energies(u);
+    }
 
     /// The warped forces are not the gradient of an energy.
     bool

@@ -21,9 +21,12 @@ namespace hyperelastic
     /// @p density: mass per unit reference volume; @p lumped: the diagonal
     /// (HRZ) mass instead of the consistent one. Only the displacement
     /// components carry mass (a mixed formulation's pressure has none).
+    /// @p cell_density: the density of each active cell by index (regions
+    /// of their own density); empty: @p density everywhere.
     InertiaTerm(const dealii::DoFHandler<dim> &dof_handler,
                 double                         density,
-                bool                           lumped);
+                bool                           lumped,
+                std::vector<double>            cell_density = {});
 
     std::string
     name() const override
@@ -45,7 +48,9 @@ namespace hyperelastic
     /// Adds -c M (u - w); returns the norm of these forces and of their
     /// round-off (a long rigid motion cancels large u and w).
     ForceSize
-    add_forces(const VectorType &u, double t, VectorType &forces) const override;
+    add_forces(const VectorType &u,
+               double            t,
+               VectorType       &forces) const override;
 
     void
     add_stiffness(const VectorType                        &u,
@@ -87,6 +92,7 @@ namespace hyperelastic
 
     const dealii::DoFHandler<dim> &dof_handler;
     const double                   density;
+    const std::vector<double>      cell_density;
     const bool                     lumped;
     /// The scalar mass matrix of the reference simplex (its weights sum to
     /// the reference volume 1/dim!), lumped if asked; a cell's is

@@ -15,6 +15,7 @@
 #include <deal.II/fe/mapping.h>
 
 #include <hyperelastic/assembly/energy_term.h>
+#include <hyperelastic/assembly/material_regions.h>
 #include <hyperelastic/materials/material.h>
 
 namespace hyperelastic
@@ -23,10 +24,10 @@ namespace hyperelastic
   class StiffnessDampingTerm : public EnergyTerm<dim>
   {
   public:
-    /// Assembles K0 (collective).
+    /// Assembles K0 with each cell's rest moduli (collective).
     StiffnessDampingTerm(const dealii::DoFHandler<dim> &dof_handler,
                          const dealii::Mapping<dim>    &mapping,
-                         const LameParameters          &moduli);
+                         const MaterialRegions<dim>    &materials);
 
     std::string
     name() const override
@@ -46,7 +47,9 @@ namespace hyperelastic
     set_step(double s, const VectorType &d);
 
     ForceSize
-    add_forces(const VectorType &u, double t, VectorType &forces) const override;
+    add_forces(const VectorType &u,
+               double            t,
+               VectorType       &forces) const override;
 
     void
     add_stiffness(const VectorType                        &u,
@@ -62,7 +65,9 @@ namespace hyperelastic
   private:
     /// K0 (u - d) into @p product and u - d into @p difference (owned).
     void
-    apply(const VectorType &u, VectorType &difference, VectorType &product) const;
+    apply(const VectorType &u,
+          VectorType       &difference,
+          VectorType       &product) const;
 
     MatrixType         stiffness;
     double             scale = 0.;

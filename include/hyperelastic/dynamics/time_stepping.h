@@ -12,6 +12,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <hyperelastic/assembly/elasticity_operator.h>
+#include <hyperelastic/assembly/material_regions.h>
 #include <hyperelastic/base/linear_algebra.h>
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/dynamics/time_integration_parameters.h>
@@ -56,12 +57,17 @@ namespace hyperelastic
     const double                   quasi_static_duration;
     const dealii::DoFHandler<dim> &dof_handler;
     const dealii::Mapping<dim>    &mapping;
-    const Material<dim>           &material;
-    ElasticityOperator<dim>       &elasticity;
+    /// The model of each cell.
+    const MaterialRegions<dim> material;
+    ElasticityOperator<dim>   &elasticity;
     /// The homogeneous Dirichlet constraints (the free dofs).
     const dealii::AffineConstraints<double> &homogeneous_constraints;
     /// The run's phase timer (the predictor has a phase of its own).
     dealii::TimerOutput &timer;
+    /// Regions: the mass density of each (region 0, the top-level
+    /// Material's cells, first); empty: 'Time integration/Density'
+    /// everywhere.
+    std::vector<double> region_densities = {};
   };
 
   /// A driver also reports (StepReporter): its columns of a converged step

@@ -30,11 +30,12 @@ namespace hyperelastic
     /// P2 with CG + AMG: the two-level P2 -> P1 preconditioner, unless
     /// 'Linear solver/P2 preconditioner = AMG'.
     void
-    configure_linear_solver(LinearSolver                  &solver,
-                            const dealii::DoFHandler<dim> &dof_handler,
-                            const dealii::Mapping<dim>    &mapping,
-                            const Material<dim>           &material,
-                            const dealii::IndexSet &pressure_dofs) const override;
+    configure_linear_solver(
+      LinearSolver                  &solver,
+      const dealii::DoFHandler<dim> &dof_handler,
+      const dealii::Mapping<dim>    &mapping,
+      const MaterialRegions<dim>    &material,
+      const dealii::IndexSet        &pressure_dofs) const override;
 
     /// The scene checks: an exactly incompressible material needs the
     /// pressure as an unknown.

@@ -17,6 +17,7 @@
 #include <deal.II/fe/mapping.h>
 
 #include <hyperelastic/assembly/assembler.h>
+#include <hyperelastic/assembly/material_regions.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/solvers/linear_solver.h>
 
@@ -45,7 +46,7 @@ namespace hyperelastic
     virtual std::unique_ptr<Assembler<dim>>
     material_part(const dealii::DoFHandler<dim> &dof_handler,
                   const dealii::Mapping<dim>    &mapping,
-                  const Material<dim>           &material) const
+                  const MaterialRegions<dim>    &material) const
     {
       (void)dof_handler, (void)mapping, (void)material;
       return nullptr;
@@ -81,7 +82,7 @@ namespace hyperelastic
     configure_linear_solver(LinearSolver                  &solver,
                             const dealii::DoFHandler<dim> &dof_handler,
                             const dealii::Mapping<dim>    &mapping,
-                            const Material<dim>           &material,
+                            const MaterialRegions<dim>    &material,
                             const dealii::IndexSet        &pressure_dofs) const
     {
       (void)solver, (void)dof_handler, (void)mapping, (void)material,

@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <hyperelastic/assembly/material_regions.h>
 #include <hyperelastic/materials/material.h>
 
 #include <array>
@@ -23,16 +24,20 @@ namespace hyperelastic
     /// Cauchy stress components xx, yy, zz, xy, xz, yz (zz from plane strain
     /// in 2D; xz and yz are zero there).
     std::array<dealii::Vector<double>, 6> cauchy;
+    /// The number k of each cell's 'Region k' (0: the top-level Material);
+    /// empty (not written) for a scene without regions.
+    dealii::Vector<double> region;
   };
 
   /// The fields of the locally owned cells for displacement @p u (with
-  /// ghost entries). @p material3d is the 3D twin of @p material, for the
-  /// plane-strain out-of-plane stress (the same model in 3D).
+  /// ghost entries), each cell with its region's model. @p material3d holds
+  /// the 3D twins of @p material's models (the same regions), for the
+  /// plane-strain out-of-plane stress.
   template <int dim>
   CellFields
   compute_cell_fields(const dealii::DoFHandler<dim>               &dof_handler,
                       const dealii::Mapping<dim>                  &mapping,
-                      const Material<dim>                         &material,
-                      const Material<3>                           &material3d,
+                      const MaterialRegions<dim>                  &material,
+                      const MaterialRegions<3>                    &material3d,
                       const dealii::TrilinosWrappers::MPI::Vector &u);
 } // namespace hyperelastic
