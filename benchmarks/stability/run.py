@@ -203,6 +203,49 @@ def arch():
     write(os.path.join(HERE, "arch.csv"), table)
 
 
+FAMILY = [(6, 0.4, 0.9), (4, 0.4, 0.9), (8, 0.4, 0.9), (6, 0.3, 0.9),
+          (6, 0.45, 0.9), (6, 0.4, 0.8), (6, 0.4, 0.95)]
+
+
+def family(csv_name):
+    """The crush of stress test 25 and its 6 neighbours (boxes, Poisson's
+    ratio, crushed by), stable neo-Hookean with the default Newton
+    settings (automatic tangent, 20 iterations), and with negative
+    curvature followed in a trust region (automatic and exact tangent)."""
+    table = []
+    policies = [("automatic", "false"), ("automatic", "true"),
+                ("exact", "true")]
+    for (n, nu, c), (tangent, follow) in [(f, p) for p in policies
+                                          for f in FAMILY]:
+        name = "family_%d_%g_%g_%s_%s" % (n, nu, c, tangent, follow)
+        text = CRUSH.format(steps=1, method="load control",
+                            tangent=tangent, iterations=20, out=OUT,
+                            name=name)
+        text = text.replace("  set Max iterations = 20",
+                            "  set Max iterations = 20\n"
+                            "  set Follow negative curvature = " + follow)
+        text = text.replace("Subdivisions = 6, 6, 6",
+                            "Subdivisions = %d, %d, %d" % (n, n, n))
+        text = text.replace("Poisson's ratio = 0.4",
+                            "Poisson's ratio = %g" % nu)
+        text = text.replace("-0.9*t", "-%g*t" % c)
+        code, wall, rows = run(name, text)
+        its = [int(r["newton_iterations"]) for r in rows]
+        steps = [float(r["load_increment"]) for r in rows]
+        table.append({
+            "tangent": tangent, "follow_negative_curvature": follow,
+            "boxes": n, "nu": nu, "crushed_to": round(1. - c, 3),
+            "completed": int(code == 0), "load_steps": len(rows),
+            "newton_iterations": sum(its),
+            "largest_per_step": max(its) if its else 0,
+            "smallest_increment": min(steps) if steps else 0.,
+            "cut_backs": sum(int(r["cut_backs"]) for r in rows),
+            "last_t": float(rows[-1]["load_factor"]) if rows else 0.,
+            "wall_s": round(wall, 2)})
+        print(table[-1], flush=True)
+    write(os.path.join(HERE, csv_name), table)
+
+
 def write(path, rows):
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
@@ -242,9 +285,14 @@ def plot():
 if __name__ == "__main__":
     parser = argparse.ArgumentParser()
     parser.add_argument("--plot", action="store_true")
+    parser.add_argument("--family", metavar="CSV",
+                        help="only the crush family, written to CSV")
     args = parser.parse_args()
-    if not args.plot:
+    if args.family:
+        family(args.family)
+    elif not args.plot:
         crush()
         bar()
         arch()
-    plot()
+    if not args.family:
+        plot()

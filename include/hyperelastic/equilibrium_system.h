@@ -122,6 +122,13 @@ namespace hyperelastic
     solve_linearization(double              forcing,
                         bool                soften_predictor,
                         LinearizationSolve &solve) override;
+    bool
+    supports_trust_region() const override;
+    void
+    solve_linearization_in_trust_region(double              forcing,
+                                        double              radius,
+                                        LinearizationSolve &solve,
+                                        TrustRegionStep    &step) override;
     Properties
     properties() const override;
     double
@@ -222,7 +229,9 @@ namespace hyperelastic
     const dealii::AffineConstraints<double> *active_constraints = nullptr;
 
     MatrixType tangent;
-    /// soften_inverting_predictor()'s system (empty until first needed).
+    /// soften_inverting_predictor()'s system, and the tangent projected
+    /// everywhere that preconditions the trust region's truncated CG
+    /// (empty until first needed).
     MatrixType extension;
     /// u: the current iterate; update: Newton's direction; trial: the
     /// line search's candidate u + alpha update; u_ghosted: whichever of u

@@ -28,6 +28,12 @@ namespace hyperelastic
     /// increment extended at zero Poisson's ratio
     /// (NonlinearSystem::solve_linearization).
     bool softened_predictor = false;
+    /// The trust region's radius this iteration was solved in (NaN: a
+    /// Newton step with line search, no trust region).
+    double trust_radius = std::numeric_limits<double>::quiet_NaN();
+    /// The truncated CG met negative curvature (the tangent is indefinite)
+    /// and the step follows it.
+    bool negative_curvature = false;
     /// Whether the energy had to decrease (sufficient decrease) in this
     /// iteration's line search; false while prescribed displacements are
     /// still being imposed or without a line search.

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/exceptions.h>
 
 #include <hyperelastic/base/tangent_projection_mode.h>
 #include <hyperelastic/solvers/convergence_test.h>
@@ -83,6 +84,11 @@ namespace hyperelastic
       /// The predictor's update was replaced by a gentler extension of the
       /// constraint increment (set only when asked for).
       bool softened_predictor = false;
+      /// Asked by Newton (where supports_trust_region()): the Krylov
+      /// method stops where it meets negative curvature, and says so in
+      /// negative_curvature; du is then not a Newton direction.
+      bool watch_curvature    = false;
+      bool negative_curvature = false;
     };
 
     /// Solve the linearized system for the direction du, with a Krylov
@@ -101,6 +107,48 @@ namespace hyperelastic
     solve_linearization(double              forcing,
                         bool                soften_predictor,
                         LinearizationSolve &solve) = 0;
+
+    /// Whether solve_linearization_in_trust_region() is available (a
+    /// potential and a Krylov solver that can follow negative curvature).
+    virtual bool
+    supports_trust_region() const
+    {
+      return false;
+    }
+
+    /// What solve_linearization_in_trust_region() found.
+    struct TrustRegionStep
+    {
+      /// The Krylov method met negative curvature: the tangent is
+      /// indefinite, and du follows such a direction to the boundary.
+      bool negative_curvature = false;
+      /// |du| = radius.
+      bool on_boundary = false;
+      /// du^T K du: the quadratic model predicts the energy change
+      /// alpha g^T du + alpha^2 curvature / 2 for the step alpha du.
+      double curvature = 0.;
+      /// |du|.
+      double norm = 0.;
+    };
+
+    /// Like solve_linearization() (never for the linearization that
+    /// imposes the constraint increment), but du approximately minimizes
+    /// the tangent's quadratic model of the energy within |du| <= @p radius
+    /// (Steihaug-Toint truncated CG): along a direction of negative
+    /// curvature it goes to the boundary instead of failing. Only where
+    /// supports_trust_region().
+    virtual void
+    solve_linearization_in_trust_region(double              forcing,
+                                        double              radius,
+                                        LinearizationSolve &solve,
+                                        TrustRegionStep    &step)
+    {
+      (void)forcing;
+      (void)radius;
+      (void)solve;
+      (void)step;
+      Assert(false, dealii::ExcNotImplemented());
+    }
 
     /// Derivative of the energy at the current iterate along du (negative for
     /// a descent direction). Valid when du leaves the constraints unchanged.
@@ -210,6 +258,13 @@ namespace hyperelastic
       /// budget; the table counts on through them. The iteration before
       /// the first one of the current solve.
       unsigned int budget_start = 0;
+      /// The trust region's radius (NaN until the first trust-region
+      /// iteration of the solve): kept through the load step.
+      double trust_radius = std::numeric_limits<double>::quiet_NaN();
+      /// A trust-region iteration succeeded where the tangent's own step
+      /// had failed: the following iterations of the solve start with the
+      /// trust region.
+      bool in_trust_region = false;
     };
 
     /// One iteration from the current iterate: the projection @p policy
@@ -241,6 +296,24 @@ namespace hyperelastic
             NewtonIteration                     &row,
             NonlinearSystem::LinearizationSolve &solve,
             std::string                         &failure) const;
+
+    /// The automatic tangent's answer to an indefinite tangent: linearize
+    /// with @p projection, solve in the trust region of
+    /// SolveState::trust_radius (Steihaug-Toint truncated CG, which follows
+    /// negative curvature) and let the energy decide: the step alpha du
+    /// (from the feasible step down, halving) is accepted if the energy
+    /// falls by at least Newton/Armijo constant times the quadratic
+    /// model's predicted decrease. The radius then shrinks to a quarter of
+    /// the step where the model predicted poorly or the step was
+    /// shortened, and doubles where a step on the boundary was predicted
+    /// well. Returns false (and the reason) like attempt().
+    bool
+    attempt_trust_region(NonlinearSystem                     &system,
+                         TangentProjection                    projection,
+                         SolveState                          &state,
+                         NewtonIteration                     &row,
+                         NonlinearSystem::LinearizationSolve &solve,
+                         std::string                         &failure) const;
 
     /// The convergence and lagging decision after @p row, the iteration
     /// @p iteration (residual norms @p norms): true once Newton's tests
