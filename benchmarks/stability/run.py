@@ -207,7 +207,7 @@ FAMILY = [(6, 0.4, 0.9), (4, 0.4, 0.9), (8, 0.4, 0.9), (6, 0.3, 0.9),
           (6, 0.45, 0.9), (6, 0.4, 0.8), (6, 0.4, 0.95)]
 
 
-def family(csv_name):
+def family(csv_name, iterations=20):
     """The crush of stress test 25 and its 6 neighbours (boxes, Poisson's
     ratio, crushed by), stable neo-Hookean with the default Newton
     settings (automatic tangent, 20 iterations), and with negative
@@ -217,13 +217,15 @@ def family(csv_name):
                 ("exact", "true")]
     for (n, nu, c), (tangent, follow) in [(f, p) for p in policies
                                           for f in FAMILY]:
-        name = "family_%d_%g_%g_%s_%s" % (n, nu, c, tangent, follow)
+        name = "family_%d_%g_%g_%s_%s_%d" % (n, nu, c, tangent, follow,
+                                              iterations)
         text = CRUSH.format(steps=1, method="load control",
-                            tangent=tangent, iterations=20, out=OUT,
+                            tangent=tangent, iterations=iterations, out=OUT,
                             name=name)
-        text = text.replace("  set Max iterations = 20",
-                            "  set Max iterations = 20\n"
-                            "  set Follow negative curvature = " + follow)
+        text = text.replace("  set Max iterations = %d" % iterations,
+                            "  set Max iterations = %d\n"
+                            "  set Follow negative curvature = %s"
+                            % (iterations, follow))
         text = text.replace("Subdivisions = 6, 6, 6",
                             "Subdivisions = %d, %d, %d" % (n, n, n))
         text = text.replace("Poisson's ratio = 0.4",
@@ -234,6 +236,7 @@ def family(csv_name):
         steps = [float(r["load_increment"]) for r in rows]
         table.append({
             "tangent": tangent, "follow_negative_curvature": follow,
+            "max_iterations": iterations,
             "boxes": n, "nu": nu, "crushed_to": round(1. - c, 3),
             "completed": int(code == 0), "load_steps": len(rows),
             "newton_iterations": sum(its),
@@ -287,9 +290,11 @@ if __name__ == "__main__":
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--family", metavar="CSV",
                         help="only the crush family, written to CSV")
+    parser.add_argument("--iterations", type=int, default=20,
+                        help="the crush family's Newton/Max iterations")
     args = parser.parse_args()
     if args.family:
-        family(args.family)
+        family(args.family, args.iterations)
     elif not args.plot:
         crush()
         bar()
