@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hyperelastic
 {
@@ -197,20 +198,8 @@ namespace hyperelastic
   }
 
   template <int dim>
-  bool
-  EquilibriumSystem<dim>::supports_trust_region() const
-  {
-    return parts.linear_solver.supports_trust_region() &&
-           properties().has_potential;
-  }
-
-  template <int dim>
   void
-  EquilibriumSystem<dim>::solve_linearization_in_trust_region(
-    const double        forcing,
-    const double        radius,
-    LinearizationSolve &solve,
-    TrustRegionStep    &step)
+  EquilibriumSystem<dim>::prepare_projected_preconditioner()
   {
     // An AMG built on an indefinite tangent is not positive definite, and
     // truncated CG needs a preconditioner that is: the one of the tangent
@@ -229,10 +218,59 @@ namespace hyperelastic
       if (unheld)
         unheld->regularize(extension);
     }
-    {
-      TimerOutput::Scope scope(parts.timer, "preconditioner setup");
-      parts.linear_solver.prepare(extension);
-    }
+    TimerOutput::Scope scope(parts.timer, "preconditioner setup");
+    parts.linear_solver.prepare(extension);
+  }
+
+  template <int dim>
+  bool
+  EquilibriumSystem<dim>::has_negative_curvature()
+  {
+    // The exact tangent at the current iterate (the last linearization
+    // was at the iterate before the last update).
+    assemble_linearization(false, TangentProjection::none);
+    prepare_projected_preconditioner();
+    TimerOutput::Scope scope(parts.timer, "linear solve");
+    // A fixed pseudo-random right-hand side on the free unknowns: its
+    // Krylov space sees every eigenvector (one of the converged residual
+    // could be zero, or blind to the unstable mode by symmetry).
+    VectorType probe(rhs);
+    for (const auto i : owned_dofs)
+      {
+        const double s = std::sin(12.9898 * static_cast<double>(i) + 4.1414);
+        probe(i)       = 43758.5453 * s - std::floor(43758.5453 * s) - 0.5;
+      }
+    probe.compress(VectorOperation::insert);
+    active_constraints->set_zero(probe);
+    update = 0.;
+    const LinearSolver::TrustRegionSolve probed =
+      parts.linear_solver.solve_in_trust_region(
+        tangent,
+        update,
+        probe,
+        parts.linear_solver_parameters.relative_tolerance,
+        std::numeric_limits<double>::infinity());
+    update = 0.;
+    return probed.negative_curvature;
+  }
+
+  template <int dim>
+  bool
+  EquilibriumSystem<dim>::supports_trust_region() const
+  {
+    return parts.linear_solver.supports_trust_region() &&
+           properties().has_potential;
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::solve_linearization_in_trust_region(
+    const double        forcing,
+    const double        radius,
+    LinearizationSolve &solve,
+    TrustRegionStep    &step)
+  {
+    prepare_projected_preconditioner();
     TimerOutput::Scope scope(parts.timer, "linear solve");
     const double       tolerance =
       std::max(forcing, parts.linear_solver_parameters.relative_tolerance);

@@ -28,6 +28,9 @@
 //                    iterations: the automatic tangent ends at a saddle;
 //                    with Newton/Follow negative curvature the trust
 //                    region leaves it for a lower minimum
+//   arch_plate MESH  the shallow arch MESH (meshes/arch_2d.msh) pressed by
+//                    a rigid plate to half its height, negative curvature
+//                    followed: snaps through, completes, stable states
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/base/error_handling.h>
@@ -36,6 +39,7 @@
 #include "support/analytic_bar.h"
 #include "support/checker.h"
 #include "support/scene_text.h"
+#include "support/summary_columns.h"
 
 #include <cmath>
 #include <iostream>
@@ -622,6 +626,84 @@ namespace
                     1.);
     checker.is_true("the last iteration is an interior Newton step",
                     !followed.back().newton_history.back().negative_curvature);
+    checker.is_true("the converged state probed: no negative curvature",
+                    followed.back().newton_history.back().probed_stable);
+  }
+
+  /// A snap under displacement control: the clamped shallow arch of
+  /// meshes/arch_2d.msh (span 2, rise 0.2, thickness 0.02, neo-Hookean
+  /// E = 1000) pressed at its crown by a rigid plate moving down by half
+  /// the arch's height (0.105) in 10 nominal steps, CG with AMG and
+  /// Newton/Follow negative curvature. The arch buckles and snaps through
+  /// ahead of the plate: the run completes, no increment falls below 1/16
+  /// of the nominal one, every accepted state is probed stable (no
+  /// negative curvature of the exact tangent), and the plate force drops
+  /// after the buckle (1 rank: 0.0504 at t = 0.7, 0.0195 at t = 1; the
+  /// crown moves 8 times as far as the plate in the step of the snap).
+  void
+  arch_plate(Checker &checker, const std::string &mesh)
+  {
+    const std::string scene =
+      subsection("Problem", entry("Dimension", "2")) +
+      subsection("Mesh", entry("Source", "file") + entry("File", mesh)) +
+      subsection("Material",
+                 entry("Model", "neo-Hookean") +
+                   entry("Young's modulus", "1000") +
+                   entry("Poisson's ratio", "0.3")) +
+      subsection("Loading", entry("Number of load steps", "10")) +
+      subsection("Newton", entry("Follow negative curvature", "true")) +
+      dirichlet(1, 1, "x, y", "0; 0") + dirichlet(2, 2, "x, y", "0; 0") +
+      subsection("Contact",
+                 subsection("Obstacle 1",
+                            entry("Type", "plane") +
+                              entry("Point", "0, 0.211") +
+                              entry("Normal", "0, -1") +
+                              entry("Motion", "0; -0.105*t"))) +
+      subsection("Output", entry("Points", "0, 0.21"));
+    std::string failure;
+    const auto  steps = run_scene_text<2>(scene, failure);
+    checker.is_true("arch under the plate: arrives at t = 1",
+                    failure.empty() && steps.back().load_factor == 1.);
+    double       smallest = 1., largest_force = 0., force_peak_t = 0.;
+    double       largest_ratio = 0., previous_uy = 0., previous_t = 0.;
+    unsigned int stable        = 0;
+    for (const auto &s : steps)
+      {
+        smallest = std::min(smallest, s.load_increment);
+        stable += s.newton_history.back().probed_stable;
+        const double force = -column(s, "contact_force_1_y");
+        if (force > largest_force)
+          {
+            largest_force = force;
+            force_peak_t  = s.load_factor;
+          }
+        // Crown travel over plate travel (0.105 per unit of t).
+        const double uy = column(s, "point1_uy");
+        largest_ratio   = std::max(largest_ratio,
+                                 (previous_uy - uy) /
+                                   (0.105 * (s.load_factor - previous_t)));
+        previous_uy = uy;
+        previous_t  = s.load_factor;
+      }
+    const double final_force = -column(steps.back(), "contact_force_1_y");
+    if (print)
+      std::cout << "  " << steps.size() << " steps, smallest increment "
+                << smallest << ", largest plate force " << largest_force
+                << " at t = " << force_peak_t << ", at the end "
+                << final_force << std::endl;
+    checker.at_least("smallest increment / nominal (0.1)",
+                     smallest / 0.1,
+                     1. / 16.);
+    checker.is_true("every accepted state probed stable",
+                    stable == steps.size());
+    checker.below("t of the largest plate force (the buckle)",
+                  force_peak_t,
+                  1.);
+    checker.below("plate force at the end / largest", final_force / largest_force, 0.5);
+    checker.at_least("largest crown travel / plate travel in a step (the "
+                     "snap)",
+                     largest_ratio,
+                     4.);
   }
 } // namespace
 
@@ -652,6 +734,8 @@ main(int argc, char *argv[])
         crush_25(checker);
       else if (which == "negative_curvature")
         negative_curvature(checker);
+      else if (which == "arch_plate" && argc > 2)
+        arch_plate(checker, argv[2]);
       else
         throw InputError("unknown case '" + which + "'");
     },

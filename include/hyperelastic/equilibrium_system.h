@@ -124,6 +124,8 @@ namespace hyperelastic
                         LinearizationSolve &solve) override;
     bool
     supports_trust_region() const override;
+    bool
+    has_negative_curvature() override;
     void
     solve_linearization_in_trust_region(double              forcing,
                                         double              radius,
@@ -197,6 +199,11 @@ namespace hyperelastic
     /// trying.
     bool
     soften_inverting_predictor(unsigned int &linear_iterations);
+    /// Assembles the tangent projected everywhere at the current iterate
+    /// into `extension` and prepares the linear solver's preconditioner on
+    /// it: positive, as truncated CG needs, where the tangent is not.
+    void
+    prepare_projected_preconditioner();
     /// Assembles the forces at u_ghosted into internal_force, external_force
     /// and residual; returns the residual norm on the free unknowns and its
     /// round-off level in @p noise.

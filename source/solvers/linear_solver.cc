@@ -302,7 +302,9 @@ namespace hyperelastic
         if (!(curvature > 0.))
           {
             result.negative_curvature = true;
-            to_boundary(p);
+            // Without a radius (a probe), x stays where CG had it.
+            if (std::isfinite(radius))
+              to_boundary(p);
             return result;
           }
         const double alpha = rz / curvature;
@@ -387,11 +389,12 @@ namespace hyperelastic
               return control;
             precondition(z, r);
             const double rz_new = r * z;
-            // A preconditioner that is not positive (an AMG built on an
-            // indefinite tangent) proves nothing about A: CG has failed,
-            // and the caller rebuilds it.
+            // A preconditioner that is not positive: an AMG built on an
+            // indefinite tangent (this one or an earlier one). CG cannot
+            // go on; the caller's trust region, preconditioned by a
+            // positive AMG, finds out whether A is indefinite.
             if (!(rz_new > 0.))
-              return control;
+              break;
             if (k == 0)
               p = z;
             else

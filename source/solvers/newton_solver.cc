@@ -469,9 +469,10 @@ namespace hyperelastic
                          const NonlinearSystem::Properties &properties,
                          const ConvergenceTest             &convergence,
                          const ResidualNorms               &norms,
-                         const NewtonIteration             &row,
+                         NewtonIteration                   &row,
                          const unsigned int                 it,
-                         SolveState                        &state) const
+                         SolveState                        &state,
+                         const TangentPolicy               &policy) const
   {
     // A linear problem is solved by its first full step (to the linear
     // solver's tolerance): a second solve would only polish round-off.
@@ -480,9 +481,30 @@ namespace hyperelastic
         !(convergence.converged(norms, row.update, system.solution_scale()) ||
           linear_done))
       return false;
+    // A saddle is no equilibrium to stop at when the curvature is
+    // followed: from it Newton goes on in the trust region (the snap).
+    if (policy.follows_negative_curvature(TangentProjection::none) &&
+        properties.has_potential && parameters.line_search &&
+        system.supports_trust_region() && !properties.linear)
+      {
+        if (system.has_negative_curvature())
+          {
+            if (verbose)
+              pcout << "   (converged to a saddle: the exact tangent has "
+                       "negative curvature there; on in the trust region)"
+                    << std::endl;
+            state.in_trust_region = true;
+            return false;
+          }
+        row.probed_stable = true;
+        if (verbose)
+          pcout << "   (no negative curvature at the converged state)"
+                << std::endl;
+      }
     if (system.judge_converged_state(true) ==
         NonlinearSystem::Verdict::accepted)
       return true;
+    row.probed_stable = false;
     // The equations changed (lagged friction): their energy at the current
     // iterate is new.
     state.current      = TrialPoint();
@@ -531,7 +553,14 @@ namespace hyperelastic
             table(result));
 
         state.target = convergence.residual_target(norms);
-        if (finished(system, properties, convergence, norms, row, it, state))
+        if (finished(system,
+                     properties,
+                     convergence,
+                     norms,
+                     result.history.back(),
+                     it,
+                     state,
+                     policy))
           return result;
       }
     throw ConvergenceFailure("Newton did not converge in " +

@@ -54,10 +54,10 @@ namespace hyperelastic
     /// (0 for a direct solve).
     ///
     /// With @p negative_curvature (CG only: supports_trust_region()), CG
-    /// stops where it meets a direction p with p^T A p <= 0 (or the
-    /// preconditioned residual has r^T z <= 0): A is indefinite, x is
-    /// left as CG had it, and *negative_curvature is set to true (false
-    /// otherwise).
+    /// stops where it meets a direction p with p^T A p <= 0 (A is
+    /// indefinite) or a residual with r^T M^-1 r <= 0 (the preconditioner
+    /// is not positive: built on an indefinite tangent); x is left as CG
+    /// had it, and *negative_curvature is set to true (false otherwise).
     unsigned int
     solve(const dealii::TrilinosWrappers::SparseMatrix &A,
           dealii::TrilinosWrappers::MPI::Vector        &x,
@@ -83,8 +83,9 @@ namespace hyperelastic
     /// solve(), it does not fail on an indefinite A: the first direction of
     /// non-positive curvature, or the first iterate beyond the radius, is
     /// followed to the boundary. Inside it stops at @p relative_tolerance
-    /// as solve() does. Only for iterative solves of a symmetric matrix
-    /// (supports_trust_region()).
+    /// as solve() does. An infinite @p radius probes A: x is left where CG
+    /// met negative curvature. Only for iterative solves of a symmetric
+    /// matrix (supports_trust_region()).
     TrustRegionSolve
     solve_in_trust_region(const dealii::TrilinosWrappers::SparseMatrix &A,
                           dealii::TrilinosWrappers::MPI::Vector        &x,

@@ -150,6 +150,18 @@ namespace hyperelastic
       Assert(false, dealii::ExcNotImplemented());
     }
 
+    /// Whether the exact tangent at the current iterate has a direction of
+    /// negative curvature (a saddle, not a minimum), as far as a Krylov
+    /// probe finds one (truncated CG from a fixed pseudo-random right-hand
+    /// side). Only where supports_trust_region(); overwrites the last
+    /// linearization.
+    virtual bool
+    has_negative_curvature()
+    {
+      Assert(false, dealii::ExcNotImplemented());
+      return false;
+    }
+
     /// Derivative of the energy at the current iterate along du (negative for
     /// a descent direction). Valid when du leaves the constraints unchanged.
     virtual double
@@ -317,7 +329,10 @@ namespace hyperelastic
 
     /// The convergence and lagging decision after @p row, the iteration
     /// @p iteration (residual norms @p norms): true once Newton's tests
-    /// pass and the system accepts the state. If instead the system's
+    /// pass and the system accepts the state. Where @p policy follows
+    /// negative curvature, a converged state at which the exact tangent
+    /// has some (a saddle) is not accepted: Newton goes on from it in the
+    /// trust region, and an accepted state's row says it was probed. If instead the system's
     /// lagged quantities changed, the solve of the new equations starts
     /// from the current iterate with a fresh budget.
     bool
@@ -325,9 +340,10 @@ namespace hyperelastic
              const NonlinearSystem::Properties &properties,
              const ConvergenceTest             &convergence,
              const ResidualNorms               &norms,
-             const NewtonIteration             &row,
+             NewtonIteration                   &row,
              unsigned int                       iteration,
-             SolveState                        &state) const;
+             SolveState                        &state,
+             const TangentPolicy               &policy) const;
 
     /// The Eisenstat-Walker forcing term for the next linear solve, from the
     /// rows so far of this Newton solve (0 for an exact solve).
