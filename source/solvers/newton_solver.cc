@@ -307,8 +307,12 @@ namespace hyperelastic
               {
                 // The radius follows how far the model can be trusted.
                 const double length = alpha * step.norm;
+                // Shortened (backtracked): the model held to about the
+                // step taken; at most a factor 4 per iteration, so that
+                // one sharp barrier or cut does not stall the descent.
                 if (row.backtracks > 0)
-                  state.trust_radius = length;
+                  state.trust_radius =
+                    std::max(length, 0.25 * state.trust_radius);
                 else if (actual < 0.25 * predicted)
                   state.trust_radius = 0.25 * length;
                 else if (actual > 0.75 * predicted && step.on_boundary &&
@@ -428,7 +432,6 @@ namespace hyperelastic
         row.negative_curvature   = false;
         solve.watch_curvature    = false;
         if (!trust_region_tried && trust_region_allowed(projection) &&
-            solve.negative_curvature &&
             start_trust_region())
           {
             solve.negative_curvature = false;
