@@ -177,9 +177,9 @@ namespace hyperelastic
                                 update,
                                 rhs,
                                 tolerance,
-                                solve.watch_curvature && supports_trust_region() ?
-                                  &solve.negative_curvature :
-                                  nullptr);
+                                solve.watch_curvature && supports_trust_region()
+                                  ? &solve.negative_curvature
+                                  : nullptr);
     // Indefinite: Newton repeats the iteration in a trust region.
     if (solve.negative_curvature)
       return;

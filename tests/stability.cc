@@ -615,11 +615,10 @@ namespace
       std::cout << "  followed: " << followed.back().newton_iterations
                 << " Newton iterations, " << trust_rows
                 << " in the trust region, " << curvature_rows
-                << " with negative curvature; energy "
-                << followed.back().energy << std::endl;
+                << " with negative curvature; energy " << followed.back().energy
+                << std::endl;
     checker.at_least("trust-region rows", trust_rows, 3);
-    checker.is_true("every trust-region row tested the energy",
-                    untested == 0);
+    checker.is_true("every trust-region row tested the energy", untested == 0);
     checker.at_least("rows that met negative curvature", curvature_rows, 1);
     checker.at_most("energy rise along a trust-region step (round-off units)",
                     worst_rise,
@@ -666,7 +665,7 @@ namespace
                     failure.empty() && steps.back().load_factor == 1.);
     double       smallest = 1., largest_force = 0., force_peak_t = 0.;
     double       largest_ratio = 0., previous_uy = 0., previous_t = 0.;
-    unsigned int stable        = 0;
+    unsigned int stable = 0;
     for (const auto &s : steps)
       {
         smallest = std::min(smallest, s.load_increment);
@@ -679,9 +678,9 @@ namespace
           }
         // Crown travel over plate travel (0.105 per unit of t).
         const double uy = column(s, "point1_uy");
-        largest_ratio   = std::max(largest_ratio,
-                                 (previous_uy - uy) /
-                                   (0.105 * (s.load_factor - previous_t)));
+        largest_ratio =
+          std::max(largest_ratio,
+                   (previous_uy - uy) / (0.105 * (s.load_factor - previous_t)));
         previous_uy = uy;
         previous_t  = s.load_factor;
       }
@@ -689,8 +688,8 @@ namespace
     if (print)
       std::cout << "  " << steps.size() << " steps, smallest increment "
                 << smallest << ", largest plate force " << largest_force
-                << " at t = " << force_peak_t << ", at the end "
-                << final_force << std::endl;
+                << " at t = " << force_peak_t << ", at the end " << final_force
+                << std::endl;
     checker.at_least("smallest increment / nominal (0.1)",
                      smallest / 0.1,
                      1. / 16.);
@@ -699,7 +698,9 @@ namespace
     checker.below("t of the largest plate force (the buckle)",
                   force_peak_t,
                   1.);
-    checker.below("plate force at the end / largest", final_force / largest_force, 0.5);
+    checker.below("plate force at the end / largest",
+                  final_force / largest_force,
+                  0.5);
     checker.at_least("largest crown travel / plate travel in a step (the "
                      "snap)",
                      largest_ratio,

@@ -166,7 +166,7 @@ namespace hyperelastic
                       TrilinosWrappers::MPI::Vector        &x,
                       const TrilinosWrappers::MPI::Vector  &b,
                       const double                          relative_tolerance,
-                      bool *negative_curvature)
+                      bool                                 *negative_curvature)
   {
     Assert(!negative_curvature || supports_trust_region(), ExcInternalError());
     if (negative_curvature)
@@ -267,7 +267,7 @@ namespace hyperelastic
   {
     Assert(supports_trust_region(), ExcInternalError());
     TrustRegionSolve result;
-    x = 0.;
+    x                   = 0.;
     const double b_norm = b.l2_norm();
     if (!(b_norm > 0.))
       return result;

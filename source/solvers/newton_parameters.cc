@@ -170,7 +170,7 @@ namespace hyperelastic
                                  : tangent_name == "automatic"
                                    ? NewtonTangent::automatic
                                    : NewtonTangent::exact_then_projected;
-    follow_negative_curvature = prm.get_bool("Follow negative curvature");
+    follow_negative_curvature      = prm.get_bool("Follow negative curvature");
     if (follow_negative_curvature && tangent == NewtonTangent::projected)
       reject("Newton/Follow negative curvature",
              "true",

@@ -227,8 +227,8 @@ namespace hyperelastic
                                    solve);
         if (solve.negative_curvature)
           {
-            failure = "the tangent is indefinite (negative curvature in " +
-                      std::string("the Krylov solve)");
+            failure = "the tangent is indefinite (negative curvature in "
+                      "the Krylov solve)";
             return false;
           }
 
@@ -259,13 +259,12 @@ namespace hyperelastic
   }
 
   bool
-  NewtonSolver::attempt_trust_region(
-    NonlinearSystem                     &system,
-    const TangentProjection              projection,
-    SolveState                          &state,
-    NewtonIteration                     &row,
-    NonlinearSystem::LinearizationSolve &solve,
-    std::string                         &failure) const
+  NewtonSolver::attempt_trust_region(NonlinearSystem        &system,
+                                     const TangentProjection projection,
+                                     SolveState             &state,
+                                     NewtonIteration        &row,
+                                     NonlinearSystem::LinearizationSolve &solve,
+                                     std::string &failure) const
   {
     using Check = NonlinearSystem::TrialCheck;
     try
@@ -297,11 +296,13 @@ namespace hyperelastic
         row.feasible_step = std::min(1., system.largest_feasible_step());
         for (double alpha = row.feasible_step;; alpha *= 0.5)
           {
-            const TrialPoint trial = system.evaluate_trial(alpha, Check::energy);
-            const double     predicted =
+            const TrialPoint trial =
+              system.evaluate_trial(alpha, Check::energy);
+            const double predicted =
               -(alpha * slope + 0.5 * alpha * alpha * step.curvature);
             const double actual = state.current.energy - trial.energy;
-            const double noise = state.current.energy_noise + trial.energy_noise;
+            const double noise =
+              state.current.energy_noise + trial.energy_noise;
             if (trial.admissible &&
                 actual + noise >= parameters.armijo_constant * predicted)
               {
@@ -387,9 +388,9 @@ namespace hyperelastic
     // away); once that has worked, the solve's later iterations start
     // there. Not for the predictor, whose energy does not compare.
     const auto trust_region_allowed = [&](const TangentProjection p) {
-      return policy.follows_negative_curvature(p) && !state.moving_constraints &&
-             properties.has_potential && parameters.line_search &&
-             system.supports_trust_region();
+      return policy.follows_negative_curvature(p) &&
+             !state.moving_constraints && properties.has_potential &&
+             parameters.line_search && system.supports_trust_region();
     };
     // The trust region starts as large as the last step taken or a tenth
     // of the solution's size, whichever is larger: the energy then cuts it
@@ -415,25 +416,25 @@ namespace hyperelastic
     // at most three attempts (and the trust region).
     row.forcing           = forcing(projection);
     solve.watch_curvature = trust_region_allowed(projection);
-    while (!(in_trust_region ?
-               attempt_trust_region(
-                 system, projection, state, row, solve, failure) :
-               attempt(system,
-                       properties,
-                       projection,
-                       policy.softens_inverting_predictor(),
-                       state,
-                       row,
-                       solve,
-                       failure)))
+    while (
+      !(in_trust_region
+          ? attempt_trust_region(system, projection, state, row, solve, failure)
+          : attempt(system,
+                    properties,
+                    projection,
+                    policy.softens_inverting_predictor(),
+                    state,
+                    row,
+                    solve,
+                    failure)))
       {
-        system.evaluate_trial(0., NonlinearSystem::TrialCheck::none);
-        row.trust_radius         = nan;
-        row.negative_curvature   = false;
-        solve.watch_curvature    = false;
+        row.trust_radius       = nan;
+        row.negative_curvature = false;
+        solve.watch_curvature  = false;
         if (!trust_region_tried && trust_region_allowed(projection) &&
             start_trust_region())
           {
+            system.evaluate_trial(0., NonlinearSystem::TrialCheck::none);
             solve.negative_curvature = false;
             trust_region_tried = in_trust_region = true;
             projection                           = TangentProjection::none;
@@ -449,6 +450,7 @@ namespace hyperelastic
                                    std::to_string(it) + "\n" + table(result));
         // Repeat this iteration from the same iterate with a tangent that
         // projects more (the projected tangent's direction descends).
+        system.evaluate_trial(0., NonlinearSystem::TrialCheck::none);
         projection  = *next;
         row.forcing = forcing(projection);
       }
@@ -522,7 +524,7 @@ namespace hyperelastic
   {
     const ConvergenceTest             convergence(parameters);
     const TangentPolicy               policy(parameters.tangent,
-                                parameters.follow_negative_curvature);
+                               parameters.follow_negative_curvature);
     const NonlinearSystem::Properties properties = system.properties();
     NewtonResult                      result;
     result.residual_merit = parameters.line_search && !properties.has_potential;

@@ -332,9 +332,9 @@ namespace hyperelastic
     /// pass and the system accepts the state. Where @p policy follows
     /// negative curvature, a converged state at which the exact tangent
     /// has some (a saddle) is not accepted: Newton goes on from it in the
-    /// trust region, and an accepted state's row says it was probed. If instead the system's
-    /// lagged quantities changed, the solve of the new equations starts
-    /// from the current iterate with a fresh budget.
+    /// trust region, and an accepted state's row says it was probed. If instead
+    /// the system's lagged quantities changed, the solve of the new equations
+    /// starts from the current iterate with a fresh budget.
     bool
     finished(NonlinearSystem                   &system,
              const NonlinearSystem::Properties &properties,
