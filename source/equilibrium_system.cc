@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hyperelastic
 {
@@ -171,7 +172,16 @@ namespace hyperelastic
       tolerance = std::min(tolerance, parts.newton.relative_residual_tolerance);
     update = 0.;
     solve.linear_iterations +=
-      parts.linear_solver.solve(tangent, update, rhs, tolerance);
+      parts.linear_solver.solve(tangent,
+                                update,
+                                rhs,
+                                tolerance,
+                                solve.watch_curvature && supports_trust_region()
+                                  ? &solve.negative_curvature
+                                  : nullptr);
+    // Indefinite: Newton repeats the iteration in a trust region.
+    if (solve.negative_curvature)
+      return;
     active_constraints->distribute(update);
     if (unheld)
       unheld->remove_unresisted(
@@ -183,6 +193,99 @@ namespace hyperelastic
         solve.linear_iterations += extension_iterations;
         solve.softened_predictor = softened;
       }
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::prepare_projected_preconditioner()
+  {
+    // An AMG built on an indefinite tangent is not positive definite, and
+    // truncated CG needs a preconditioner that is: the one of the tangent
+    // projected everywhere (a matrix of its own, since ML's finest level
+    // refers to the matrix it was built on).
+    {
+      TimerOutput::Scope scope(parts.timer, "assembly");
+      VectorType         unused_rhs(rhs);
+      extension.reinit(tangent);
+      elasticity->assemble_system(u_ghosted,
+                                  current_load_factor,
+                                  *active_constraints,
+                                  extension,
+                                  unused_rhs,
+                                  TangentProjection::every_point);
+      if (unheld)
+        unheld->regularize(extension);
+    }
+    TimerOutput::Scope scope(parts.timer, "preconditioner setup");
+    parts.linear_solver.prepare(extension);
+  }
+
+  template <int dim>
+  bool
+  EquilibriumSystem<dim>::has_negative_curvature()
+  {
+    // The exact tangent at the current iterate (the last linearization
+    // was at the iterate before the last update).
+    assemble_linearization(false, TangentProjection::none);
+    prepare_projected_preconditioner();
+    TimerOutput::Scope scope(parts.timer, "linear solve");
+    // A fixed pseudo-random right-hand side on the free unknowns: its
+    // Krylov space sees every eigenvector (one of the converged residual
+    // could be zero, or blind to the unstable mode by symmetry).
+    VectorType probe(rhs);
+    for (const auto i : owned_dofs)
+      {
+        const double s = std::sin(12.9898 * static_cast<double>(i) + 4.1414);
+        probe(i)       = 43758.5453 * s - std::floor(43758.5453 * s) - 0.5;
+      }
+    probe.compress(VectorOperation::insert);
+    active_constraints->set_zero(probe);
+    update = 0.;
+    const LinearSolver::TrustRegionSolve probed =
+      parts.linear_solver.solve_in_trust_region(
+        tangent,
+        update,
+        probe,
+        parts.linear_solver_parameters.relative_tolerance,
+        std::numeric_limits<double>::infinity());
+    update = 0.;
+    return probed.negative_curvature;
+  }
+
+  template <int dim>
+  bool
+  EquilibriumSystem<dim>::supports_trust_region() const
+  {
+    return parts.linear_solver.supports_trust_region() &&
+           properties().has_potential;
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::solve_linearization_in_trust_region(
+    const double        forcing,
+    const double        radius,
+    LinearizationSolve &solve,
+    TrustRegionStep    &step)
+  {
+    prepare_projected_preconditioner();
+    TimerOutput::Scope scope(parts.timer, "linear solve");
+    const double       tolerance =
+      std::max(forcing, parts.linear_solver_parameters.relative_tolerance);
+    const LinearSolver::TrustRegionSolve truncated =
+      parts.linear_solver.solve_in_trust_region(
+        tangent, update, rhs, tolerance, radius);
+    solve.linear_iterations += truncated.iterations;
+    active_constraints->distribute(update);
+    if (unheld)
+      unheld->remove_unresisted(
+        u, tangent, rhs, residual_target(), force_scale, update);
+    step.negative_curvature = truncated.negative_curvature;
+    step.on_boundary        = truncated.on_boundary;
+    VectorType tangent_update(update);
+    tangent.vmult(tangent_update, update);
+    step.curvature = update * tangent_update;
+    step.norm      = update.l2_norm();
   }
 
   template <int dim>

@@ -23,6 +23,14 @@
 //                    Poisson's ratio); stable neo-Hookean with 50
 //                    iterations likewise (exact Newton stops at the fold
 //                    t = 0.977); both released to u = 0 (1e-10)
+//   negative_curvature
+//                    the crush with nu = 0.3 in one step of at most 50
+//                    iterations: the automatic tangent ends at a saddle;
+//                    with Newton/Follow negative curvature the trust
+//                    region leaves it for a lower minimum
+//   arch_plate MESH  the shallow arch MESH (meshes/arch_2d.msh) pressed by
+//                    a rigid plate to half its height, negative curvature
+//                    followed: snaps through, completes, stable states
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/base/error_handling.h>
@@ -31,6 +39,7 @@
 #include "support/analytic_bar.h"
 #include "support/checker.h"
 #include "support/scene_text.h"
+#include "support/summary_columns.h"
 
 #include <cmath>
 #include <iostream>
@@ -550,6 +559,153 @@ namespace
                     snh_back.largest_u_back,
                     1e-10);
   }
+
+  /// Newton/Follow negative curvature on the crush of stress test 25 with
+  /// nu = 0.3, in one step of at most 50 Newton iterations: the automatic
+  /// tangent converges to a saddle (0.2496119; the exact tangent there has
+  /// negative curvature); following that curvature in a trust region,
+  /// Newton leaves it for a minimum of lower energy (0.2459701 on 1 rank
+  /// in 28 iterations, 0.24526 on 2), every trust-region step lowering the
+  /// energy, and ends with interior (Newton) steps.
+  void
+  negative_curvature(Checker &checker)
+  {
+    const auto scene = [](const std::string &follow) {
+      return cube_scene("stable neo-Hookean", 0.3) +
+             subsection("Newton",
+                        entry("Max iterations", "50") +
+                          entry("Follow negative curvature", follow)) +
+             dirichlet(1, 4, "x, y, z", "0; 0; 0") +
+             dirichlet(2, 5, "x, y, z", "0; 0; -0.9*t");
+    };
+    std::string failure;
+    const auto  saddle = run_scene_text<3>(scene("false"), failure);
+    checker.is_true("projected where J <= 0: converges in one step",
+                    failure.empty() && saddle.size() == 1);
+    checker.close("projected where J <= 0: energy (a saddle)",
+                  saddle.back().energy,
+                  0.2496119,
+                  0.2496119,
+                  1e-6);
+    bool any_trust_region = false;
+    for (const auto &row : saddle.back().newton_history)
+      any_trust_region = any_trust_region || std::isfinite(row.trust_radius);
+    checker.is_true("projected where J <= 0: no trust region",
+                    !any_trust_region);
+
+    const auto followed = run_scene_text<3>(scene("true"), failure);
+    checker.is_true("negative curvature followed: converges in one step",
+                    failure.empty() && followed.size() == 1);
+    checker.below("negative curvature followed: energy below the saddle's",
+                  followed.back().energy,
+                  saddle.back().energy - 1e-3);
+    unsigned int trust_rows = 0, curvature_rows = 0, untested = 0;
+    double       worst_rise = -1e300;
+    for (const auto &row : followed.back().newton_history)
+      if (std::isfinite(row.trust_radius))
+        {
+          ++trust_rows;
+          curvature_rows += row.negative_curvature;
+          untested += !row.energy_tested;
+          worst_rise = std::max(worst_rise,
+                                (row.energy - row.energy_before) /
+                                  (row.energy_noise + 1e-300));
+        }
+    if (print)
+      std::cout << "  followed: " << followed.back().newton_iterations
+                << " Newton iterations, " << trust_rows
+                << " in the trust region, " << curvature_rows
+                << " with negative curvature; energy " << followed.back().energy
+                << std::endl;
+    checker.at_least("trust-region rows", trust_rows, 3);
+    checker.is_true("every trust-region row tested the energy", untested == 0);
+    checker.at_least("rows that met negative curvature", curvature_rows, 1);
+    checker.at_most("energy rise along a trust-region step (round-off units)",
+                    worst_rise,
+                    1.);
+    checker.is_true("the last iteration is an interior Newton step",
+                    !followed.back().newton_history.back().negative_curvature);
+    checker.is_true("the converged state probed: no negative curvature",
+                    followed.back().newton_history.back().probed_stable);
+  }
+
+  /// A snap under displacement control: the clamped shallow arch of
+  /// meshes/arch_2d.msh (span 2, rise 0.2, thickness 0.02, neo-Hookean
+  /// E = 1000) pressed at its crown by a rigid plate moving down by half
+  /// the arch's height (0.105) in 10 nominal steps, CG with AMG and
+  /// Newton/Follow negative curvature. The arch buckles and snaps through
+  /// ahead of the plate: the run completes, no increment falls below 1/16
+  /// of the nominal one, every accepted state is probed stable (no
+  /// negative curvature of the exact tangent), and the plate force drops
+  /// after the buckle (1 rank: 0.0504 at t = 0.7, 0.0195 at t = 1; the
+  /// crown moves 8 times as far as the plate in the step of the snap).
+  void
+  arch_plate(Checker &checker, const std::string &mesh)
+  {
+    const std::string scene =
+      subsection("Problem", entry("Dimension", "2")) +
+      subsection("Mesh", entry("Source", "file") + entry("File", mesh)) +
+      subsection("Material",
+                 entry("Model", "neo-Hookean") +
+                   entry("Young's modulus", "1000") +
+                   entry("Poisson's ratio", "0.3")) +
+      subsection("Loading", entry("Number of load steps", "10")) +
+      subsection("Newton", entry("Follow negative curvature", "true")) +
+      dirichlet(1, 1, "x, y", "0; 0") + dirichlet(2, 2, "x, y", "0; 0") +
+      subsection("Contact",
+                 subsection("Obstacle 1",
+                            entry("Type", "plane") +
+                              entry("Point", "0, 0.211") +
+                              entry("Normal", "0, -1") +
+                              entry("Motion", "0; -0.105*t"))) +
+      subsection("Output", entry("Points", "0, 0.21"));
+    std::string failure;
+    const auto  steps = run_scene_text<2>(scene, failure);
+    checker.is_true("arch under the plate: arrives at t = 1",
+                    failure.empty() && steps.back().load_factor == 1.);
+    double       smallest = 1., largest_force = 0., force_peak_t = 0.;
+    double       largest_ratio = 0., previous_uy = 0., previous_t = 0.;
+    unsigned int stable = 0;
+    for (const auto &s : steps)
+      {
+        smallest = std::min(smallest, s.load_increment);
+        stable += s.newton_history.back().probed_stable;
+        const double force = -column(s, "contact_force_1_y");
+        if (force > largest_force)
+          {
+            largest_force = force;
+            force_peak_t  = s.load_factor;
+          }
+        // Crown travel over plate travel (0.105 per unit of t).
+        const double uy = column(s, "point1_uy");
+        largest_ratio =
+          std::max(largest_ratio,
+                   (previous_uy - uy) / (0.105 * (s.load_factor - previous_t)));
+        previous_uy = uy;
+        previous_t  = s.load_factor;
+      }
+    const double final_force = -column(steps.back(), "contact_force_1_y");
+    if (print)
+      std::cout << "  " << steps.size() << " steps, smallest increment "
+                << smallest << ", largest plate force " << largest_force
+                << " at t = " << force_peak_t << ", at the end " << final_force
+                << std::endl;
+    checker.at_least("smallest increment / nominal (0.1)",
+                     smallest / 0.1,
+                     1. / 16.);
+    checker.is_true("every accepted state probed stable",
+                    stable == steps.size());
+    checker.below("t of the largest plate force (the buckle)",
+                  force_peak_t,
+                  1.);
+    checker.below("plate force at the end / largest",
+                  final_force / largest_force,
+                  0.5);
+    checker.at_least("largest crown travel / plate travel in a step (the "
+                     "snap)",
+                     largest_ratio,
+                     4.);
+  }
 } // namespace
 
 int
@@ -577,6 +733,10 @@ main(int argc, char *argv[])
         collective(checker);
       else if (which == "crush")
         crush_25(checker);
+      else if (which == "negative_curvature")
+        negative_curvature(checker);
+      else if (which == "arch_plate" && argc > 2)
+        arch_plate(checker, argv[2]);
       else
         throw InputError("unknown case '" + which + "'");
     },

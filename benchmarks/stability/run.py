@@ -203,6 +203,147 @@ def arch():
     write(os.path.join(HERE, "arch.csv"), table)
 
 
+FAMILY = [(6, 0.4, 0.9), (4, 0.4, 0.9), (8, 0.4, 0.9), (6, 0.3, 0.9),
+          (6, 0.45, 0.9), (6, 0.4, 0.8), (6, 0.4, 0.95)]
+
+
+def family(csv_name, iterations=20):
+    """The crush of stress test 25 and its 6 neighbours (boxes, Poisson's
+    ratio, crushed by), stable neo-Hookean with the default Newton
+    settings (automatic tangent, 20 iterations), and with negative
+    curvature followed in a trust region (automatic and exact tangent)."""
+    table = []
+    policies = [("automatic", "false"), ("automatic", "true"),
+                ("exact", "true")]
+    for (n, nu, c), (tangent, follow) in [(f, p) for p in policies
+                                          for f in FAMILY]:
+        name = "family_%d_%g_%g_%s_%s_%d" % (n, nu, c, tangent, follow,
+                                              iterations)
+        text = CRUSH.format(steps=1, method="load control",
+                            tangent=tangent, iterations=iterations, out=OUT,
+                            name=name)
+        text = text.replace("  set Max iterations = %d" % iterations,
+                            "  set Max iterations = %d\n"
+                            "  set Follow negative curvature = %s"
+                            % (iterations, follow))
+        text = text.replace("Subdivisions = 6, 6, 6",
+                            "Subdivisions = %d, %d, %d" % (n, n, n))
+        text = text.replace("Poisson's ratio = 0.4",
+                            "Poisson's ratio = %g" % nu)
+        text = text.replace("-0.9*t", "-%g*t" % c)
+        code, wall, rows = run(name, text)
+        its = [int(r["newton_iterations"]) for r in rows]
+        steps = [float(r["load_increment"]) for r in rows]
+        table.append({
+            "tangent": tangent, "follow_negative_curvature": follow,
+            "max_iterations": iterations,
+            "boxes": n, "nu": nu, "crushed_to": round(1. - c, 3),
+            "completed": int(code == 0), "load_steps": len(rows),
+            "newton_iterations": sum(its),
+            "largest_per_step": max(its) if its else 0,
+            "smallest_increment": min(steps) if steps else 0.,
+            "cut_backs": sum(int(r["cut_backs"]) for r in rows),
+            "last_t": float(rows[-1]["load_factor"]) if rows else 0.,
+            "wall_s": round(wall, 2)})
+        print(table[-1], flush=True)
+    write(os.path.join(HERE, csv_name), table)
+
+
+ARCH_PLATE = """
+subsection Problem
+  set Dimension = 2
+end
+subsection Mesh
+  set Source = file
+  set File   = {mesh}
+end
+subsection Material
+  set Model           = neo-Hookean
+  set Young's modulus = 1000
+  set Poisson's ratio = 0.3
+end
+subsection Loading
+  set Number of load steps = {steps}
+end
+subsection Linear solver
+  set Type = {solver}
+end
+subsection Newton
+  set Follow negative curvature = {follow}
+end
+subsection Dirichlet 1
+  set Boundary id  = 1
+  set Components   = x, y
+  set Displacement = 0; 0
+end
+subsection Dirichlet 2
+  set Boundary id  = 2
+  set Components   = x, y
+  set Displacement = 0; 0
+end
+subsection Contact
+  subsection Obstacle 1
+    set Type   = plane
+    set Point  = 0, 0.211
+    set Normal = 0, -1
+    set Motion = 0; -{travel}*t
+  end
+end
+subsection Output
+  set Write VTU = false
+  set Directory = {out}
+  set Base name = {name}
+  set Points    = 0, 0.21
+end
+"""
+
+
+def arch_plate():
+    """The shallow arch of meshes/arch_2d.msh (rise 0.2, top of the crown
+    at 0.21) pressed by a rigid plate: to half its height (0.105) in 10
+    nominal steps (tests/stability.cc case arch_plate) and to 86 % (0.18)
+    in 6, with the direct solver, CG, and CG with negative curvature
+    followed. Writes every accepted step (plate travel, crown deflection,
+    plate force, Newton iterations)."""
+    summary, curves = [], []
+    for travel, steps in ((0.105, 10), (0.18, 6)):
+        for solver, follow in (("direct", "false"), ("CG with AMG", "false"),
+                               ("CG with AMG", "true")):
+            name = "arch_plate_%g_%s_%s" % (travel, solver.split()[0], follow)
+            code, wall, rows = run(name, ARCH_PLATE.format(
+                mesh=os.path.join(ROOT, "meshes", "arch_2d.msh"),
+                steps=steps, solver=solver, follow=follow, travel=travel,
+                out=OUT, name=name))
+            its = [int(r["newton_iterations"]) for r in rows]
+            force = [-float(r["contact_force_1_y"]) for r in rows]
+            summary.append({
+                "plate_travel": travel, "nominal_steps": steps,
+                "solver": solver, "follow_negative_curvature": follow,
+                "completed": int(code == 0), "steps": len(rows),
+                "newton_iterations": sum(its),
+                "largest_per_step": max(its) if its else 0,
+                "smallest_increment_over_nominal": round(
+                    min(float(r["load_increment"]) for r in rows) * steps,
+                    5) if rows else 0.,
+                "last_t": float(rows[-1]["load_factor"]) if rows else 0.,
+                "largest_force": max(force) if force else 0.,
+                "final_force": force[-1] if force else 0.,
+                "wall_s": round(wall, 2)})
+            print(summary[-1], flush=True)
+            for r in rows:
+                curves.append({
+                    "plate_travel": travel, "solver": solver,
+                    "follow_negative_curvature": follow, "step": r["step"],
+                    "t": r["load_factor"],
+                    "plate": travel * float(r["load_factor"]),
+                    "crown_uy": r["point1_uy"],
+                    "plate_force": -float(r["contact_force_1_y"]),
+                    "newton_iterations": r["newton_iterations"],
+                    "increment": r["load_increment"]})
+    write(os.path.join(HERE, "arch_plate.csv"), summary)
+    write(os.path.join(HERE, "arch_plate_curve.csv"), curves)
+
+
 def write(path, rows):
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
@@ -242,9 +383,20 @@ def plot():
 if __name__ == "__main__":
     parser = argparse.ArgumentParser()
     parser.add_argument("--plot", action="store_true")
+    parser.add_argument("--family", metavar="CSV",
+                        help="only the crush family, written to CSV")
+    parser.add_argument("--iterations", type=int, default=20,
+                        help="the crush family's Newton/Max iterations")
+    parser.add_argument("--arch-plate", action="store_true",
+                        help="only the arch pressed by a plate")
     args = parser.parse_args()
-    if not args.plot:
+    if args.arch_plate:
+        arch_plate()
+    elif args.family:
+        family(args.family, args.iterations)
+    elif not args.plot:
         crush()
         bar()
         arch()
-    plot()
+    if not args.family and not args.arch_plate:
+        plot()

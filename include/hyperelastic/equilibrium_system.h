@@ -123,6 +123,15 @@ namespace hyperelastic
     solve_linearization(double              forcing,
                         bool                soften_predictor,
                         LinearizationSolve &solve) override;
+    bool
+    supports_trust_region() const override;
+    bool
+    has_negative_curvature() override;
+    void
+    solve_linearization_in_trust_region(double              forcing,
+                                        double              radius,
+                                        LinearizationSolve &solve,
+                                        TrustRegionStep    &step) override;
     Properties
     properties() const override;
     double
@@ -193,6 +202,11 @@ namespace hyperelastic
     /// trying.
     bool
     soften_inverting_predictor(unsigned int &linear_iterations);
+    /// Assembles the tangent projected everywhere at the current iterate
+    /// into `extension` and prepares the linear solver's preconditioner on
+    /// it: positive, as truncated CG needs, where the tangent is not.
+    void
+    prepare_projected_preconditioner();
     /// Assembles the forces at u_ghosted into internal_force, external_force
     /// and residual; returns the residual norm on the free unknowns and its
     /// round-off level in @p noise.
@@ -225,7 +239,9 @@ namespace hyperelastic
     const dealii::AffineConstraints<double> *active_constraints = nullptr;
 
     MatrixType tangent;
-    /// soften_inverting_predictor()'s system (empty until first needed).
+    /// soften_inverting_predictor()'s system, and the tangent projected
+    /// everywhere that preconditions the trust region's truncated CG
+    /// (empty until first needed).
     MatrixType extension;
     /// u: the current iterate; update: Newton's direction; trial: the
     /// line search's candidate u + alpha update; u_ghosted: whichever of u

@@ -165,8 +165,12 @@ namespace hyperelastic
   LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
                       TrilinosWrappers::MPI::Vector        &x,
                       const TrilinosWrappers::MPI::Vector  &b,
-                      const double                          relative_tolerance)
+                      const double                          relative_tolerance,
+                      bool                                 *negative_curvature)
   {
+    Assert(!negative_curvature || supports_trust_region(), ExcInternalError());
+    if (negative_curvature)
+      *negative_curvature = false;
     if (parameters.type == LinearSolverType::direct)
       {
         SolverControl                                  control(1, 0);
@@ -201,16 +205,28 @@ namespace hyperelastic
       fresh ? parameters.max_iterations
             : std::min<unsigned int>(parameters.max_iterations,
                                      std::ceil(3. * rate_limit * decades));
-    SolverControl control    = run_cg(A, x, b, relative_tolerance, limit);
-    unsigned int  iterations = control.last_step();
+    SolverControl control =
+      run_cg(A, x, b, relative_tolerance, limit, negative_curvature);
+    unsigned int iterations = control.last_step();
+    // Indefinite: the caller follows the curvature (no rebuild helps).
+    if (negative_curvature && *negative_curvature)
+      return iterations;
     // Builds anew for this tangent and solves once more (the same decision
     // on every rank: CG's counts are global).
     const auto retry = [&](const bool with_replacement) {
       build_amg(A, false, with_replacement);
-      x = 0.;
-      control = run_cg(A, x, b, relative_tolerance, parameters.max_iterations);
+      x       = 0.;
+      control = run_cg(A,
+                       x,
+                       b,
+                       relative_tolerance,
+                       parameters.max_iterations,
+                       negative_curvature);
       iterations += control.last_step();
       baseline_rate = control.last_step() / decades;
+    };
+    const auto indefinite = [&]() {
+      return negative_curvature && *negative_curvature;
     };
     // An old hierarchy failed: a new one.
     if (control.last_check() != SolverControl::success && !fresh)
@@ -218,8 +234,11 @@ namespace hyperelastic
     // The replacement (two-level) failed for this tangent (CG near a limit
     // point, where the tangent is nearly singular or indefinite): ML AMG on
     // the whole tangent, until the next rebuild.
-    if (control.last_check() != SolverControl::success && replacement_in_use)
+    if (control.last_check() != SolverControl::success && replacement_in_use &&
+        !indefinite())
       retry(false);
+    if (indefinite())
+      return iterations;
     if (control.last_check() != SolverControl::success)
       {
         std::ostringstream message;
@@ -237,6 +256,79 @@ namespace hyperelastic
     else if (rate > rate_limit)
       rebuild_requested = true;
     return iterations;
+  }
+
+  LinearSolver::TrustRegionSolve
+  LinearSolver::solve_in_trust_region(const TrilinosWrappers::SparseMatrix &A,
+                                      TrilinosWrappers::MPI::Vector        &x,
+                                      const TrilinosWrappers::MPI::Vector  &b,
+                                      const double relative_tolerance,
+                                      const double radius) const
+  {
+    Assert(supports_trust_region(), ExcInternalError());
+    TrustRegionSolve result;
+    x                   = 0.;
+    const double b_norm = b.l2_norm();
+    if (!(b_norm > 0.))
+      return result;
+    // x + tau p on the boundary |x + tau p| = radius (tau >= 0).
+    const auto to_boundary = [&](const TrilinosWrappers::MPI::Vector &p) {
+      const double pp = p * p, xp = x * p, xx = x * x;
+      const double tau =
+        (-xp + std::sqrt(std::max(0., xp * xp + pp * (radius * radius - xx)))) /
+        pp;
+      x.add(tau, p);
+      result.on_boundary = true;
+    };
+    // r = b - A x, z = M^-1 r, p the search direction.
+    TrilinosWrappers::MPI::Vector r(b), z(b), p(b), Ap(b);
+    precondition(z, r);
+    double rz = r * z;
+    // The preconditioner must be positive (the caller builds it on a
+    // positive semi-definite matrix); if it is not, the steepest descent
+    // direction to the boundary.
+    p = rz > 0. ? z : b;
+    if (!(rz > 0.))
+      {
+        to_boundary(p);
+        return result;
+      }
+    const double target = relative_tolerance * b_norm;
+    for (unsigned int k = 0; k < parameters.max_iterations; ++k)
+      {
+        ++result.iterations;
+        A.vmult(Ap, p);
+        const double curvature = p * Ap;
+        if (!(curvature > 0.))
+          {
+            result.negative_curvature = true;
+            // Without a radius (a probe), x stays where CG had it.
+            if (std::isfinite(radius))
+              to_boundary(p);
+            return result;
+          }
+        const double alpha = rz / curvature;
+        // Beyond the radius: the step stops on the boundary. The
+        // preconditioned iterates need not grow monotonically in this
+        // norm, so every iterate is checked.
+        const double xp = x * p, xx = x * x, pp = p * p;
+        if (xx + 2. * alpha * xp + alpha * alpha * pp >= radius * radius)
+          {
+            to_boundary(p);
+            return result;
+          }
+        x.add(alpha, p);
+        r.add(-alpha, Ap);
+        if (r.l2_norm() <= target)
+          return result;
+        precondition(z, r);
+        const double rz_new = r * z;
+        if (!(rz_new > 0.))
+          return result;
+        p.sadd(rz_new / rz, 1., z);
+        rz = rz_new;
+      }
+    return result;
   }
 
   template <typename Preconditioner>
@@ -263,14 +355,61 @@ namespace hyperelastic
       }
   }
 
+  void
+  LinearSolver::precondition(TrilinosWrappers::MPI::Vector       &z,
+                             const TrilinosWrappers::MPI::Vector &r) const
+  {
+    if (replacement_in_use)
+      replacement->vmult(z, r);
+    else
+      amg.vmult(z, r);
+  }
+
   SolverControl
   LinearSolver::run_cg(const TrilinosWrappers::SparseMatrix &A,
                        TrilinosWrappers::MPI::Vector        &x,
                        const TrilinosWrappers::MPI::Vector  &b,
                        const double                          tolerance,
-                       const unsigned int max_iterations) const
+                       const unsigned int                    max_iterations,
+                       bool *negative_curvature) const
   {
     SolverControl control(max_iterations, tolerance * b.l2_norm());
+    if (negative_curvature)
+      {
+        // Preconditioned CG as deal.II's SolverCG runs it (from x, the
+        // residual norm tested against the same control), watching the
+        // curvature of every search direction.
+        TrilinosWrappers::MPI::Vector r(b), z(b), p(b), Ap(b);
+        A.vmult(Ap, x);
+        r.add(-1., Ap);
+        double rz = 0.;
+        for (unsigned int k = 0;; ++k)
+          {
+            if (control.check(k, r.l2_norm()) != SolverControl::iterate)
+              return control;
+            precondition(z, r);
+            const double rz_new = r * z;
+            // A preconditioner that is not positive: an AMG built on an
+            // indefinite tangent (this one or an earlier one). CG cannot
+            // go on; the caller's trust region, preconditioned by a
+            // positive AMG, finds out whether A is indefinite.
+            if (!(rz_new > 0.))
+              break;
+            if (k == 0)
+              p = z;
+            else
+              p.sadd(rz_new / rz, 1., z);
+            rz = rz_new;
+            A.vmult(Ap, p);
+            const double curvature = p * Ap;
+            if (!(curvature > 0.))
+              break;
+            x.add(rz / curvature, p);
+            r.add(-rz / curvature, Ap);
+          }
+        *negative_curvature = true;
+        return control;
+      }
     try
       {
         if (saddle_point)

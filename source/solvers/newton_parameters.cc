@@ -92,6 +92,25 @@ namespace hyperelastic
       "table): the crush of stress test 25 then converges in one step "
       "instead of stalling at the fold of its path.");
     prm.declare_entry(
+      "Follow negative curvature",
+      "false",
+      Bool(),
+      "true: where CG on the exact tangent meets a direction of negative "
+      "curvature (p^T K p <= 0: the tangent is indefinite, at a snap, a "
+      "fold or a buckle), that iteration and the rest of the load step "
+      "are solved in a trust region instead (Steihaug-Toint truncated CG "
+      "on the exact tangent, preconditioned by AMG on the tangent projected "
+      "to positive semi-definite): the step follows the negative curvature "
+      "to the trust region's boundary, the energy decides whether it is "
+      "taken (at least 'Armijo constant' times the decrease the quadratic "
+      "model predicts; shortened by halving from the feasible step of "
+      "contact), and the radius, kept through the load step, follows how "
+      "well the model predicted. Converged states are then minima the "
+      "exact tangent cannot see past, not saddles. Marked 'trust region' "
+      "in the Newton table. With Tangent = automatic, exact or exact, "
+      "projected on failure; needs the iterative linear solver, a "
+      "symmetric tangent and a potential (otherwise without effect).");
+    prm.declare_entry(
       "Inexact Newton",
       "true",
       Bool(),
@@ -151,6 +170,12 @@ namespace hyperelastic
                                  : tangent_name == "automatic"
                                    ? NewtonTangent::automatic
                                    : NewtonTangent::exact_then_projected;
+    follow_negative_curvature      = prm.get_bool("Follow negative curvature");
+    if (follow_negative_curvature && tangent == NewtonTangent::projected)
+      reject("Newton/Follow negative curvature",
+             "true",
+             "the projected tangent (Tangent = projected) has no negative "
+             "curvature to follow; use Tangent = automatic or exact");
     const std::string inverted = prm.get("Inverted elements at equilibrium");
     inverted_elements          = inverted == "reject" ? InvertedElements::reject
                                  : inverted == "warn" ? InvertedElements::warn

@@ -82,6 +82,10 @@ namespace hyperelastic
                                            : "");
       if (row.feasible_step < 1.)
         s << "  feasible step " << row.feasible_step;
+      if (std::isfinite(row.trust_radius))
+        s << "  trust region " << std::scientific << std::setprecision(2)
+          << row.trust_radius << std::defaultfloat
+          << (row.negative_curvature ? " (negative curvature)" : "");
       if (row.softened_predictor)
         s << "  (predictor inverted cells: increment extended at zero "
              "Poisson's ratio)";
@@ -216,9 +220,17 @@ namespace hyperelastic
       {
         state.moving_constraints =
           system.assemble_linearization(state.moving_constraints, projection);
+        solve.watch_curvature =
+          solve.watch_curvature && !state.moving_constraints;
         system.solve_linearization(row.forcing,
                                    soften_predictor && state.moving_constraints,
                                    solve);
+        if (solve.negative_curvature)
+          {
+            failure = "the tangent is indefinite (negative curvature in "
+                      "the Krylov solve)";
+            return false;
+          }
 
         const bool test_merit =
           parameters.line_search && !state.moving_constraints;
@@ -241,6 +253,94 @@ namespace hyperelastic
     catch (const ConvergenceFailure &e)
       {
         // A Krylov failure (an indefinite tangent can break CG).
+        failure = e.what();
+        return false;
+      }
+  }
+
+  bool
+  NewtonSolver::attempt_trust_region(NonlinearSystem        &system,
+                                     const TangentProjection projection,
+                                     SolveState             &state,
+                                     NewtonIteration        &row,
+                                     NonlinearSystem::LinearizationSolve &solve,
+                                     std::string &failure) const
+  {
+    using Check = NonlinearSystem::TrialCheck;
+    try
+      {
+        if (system.assemble_linearization(false, projection))
+          {
+            // A term's admissible set is still on its way: a predictor.
+            state.moving_constraints = true;
+            failure = "a load term still moves within the step";
+            return false;
+          }
+        NonlinearSystem::TrustRegionStep step;
+        system.solve_linearization_in_trust_region(row.forcing,
+                                                   state.trust_radius,
+                                                   solve,
+                                                   step);
+        row.trust_radius       = state.trust_radius;
+        row.negative_curvature = step.negative_curvature;
+        if (!std::isfinite(state.current.energy))
+          state.current = system.evaluate_trial(0., Check::energy);
+        const double slope = system.directional_derivative();
+        if (!(slope < 0.) || !(step.norm > 0.))
+          {
+            // Only round-off can make the truncated CG's step ascend.
+            failure = "the trust-region step is not a descent direction";
+            return false;
+          }
+        row.backtracks    = 0;
+        row.feasible_step = std::min(1., system.largest_feasible_step());
+        for (double alpha = row.feasible_step;; alpha *= 0.5)
+          {
+            const TrialPoint trial =
+              system.evaluate_trial(alpha, Check::energy);
+            const double predicted =
+              -(alpha * slope + 0.5 * alpha * alpha * step.curvature);
+            const double actual = state.current.energy - trial.energy;
+            const double noise =
+              state.current.energy_noise + trial.energy_noise;
+            if (trial.admissible &&
+                actual + noise >= parameters.armijo_constant * predicted)
+              {
+                // The radius follows how far the model can be trusted.
+                const double length = alpha * step.norm;
+                // Shortened (backtracked): the model held to about the
+                // step taken; at most a factor 4 per iteration, so that
+                // one sharp barrier or cut does not stall the descent.
+                if (row.backtracks > 0)
+                  state.trust_radius =
+                    std::max(length, 0.25 * state.trust_radius);
+                else if (actual < 0.25 * predicted)
+                  state.trust_radius = 0.25 * length;
+                else if (actual > 0.75 * predicted && step.on_boundary &&
+                         alpha == 1.)
+                  state.trust_radius *= 2.;
+                row.step_length   = alpha;
+                row.energy_tested = true;
+                row.energy_before = state.current.energy;
+                row.energy        = trial.energy;
+                row.energy_noise  = trial.energy_noise;
+                row.min_J         = trial.min_J;
+                return true;
+              }
+            ++row.backtracks;
+            if (0.5 * alpha < parameters.minimum_step_length)
+              {
+                state.trust_radius *= 0.25;
+                failure = "the trust-region step found no decrease of the "
+                          "energy down to the step length " +
+                          std::to_string(parameters.minimum_step_length) +
+                          " (Newton/Minimum step length)";
+                return false;
+              }
+          }
+      }
+    catch (const ConvergenceFailure &e)
+      {
         failure = e.what();
         return false;
       }
@@ -282,18 +382,67 @@ namespace hyperelastic
     NewtonIteration                     row;
     NonlinearSystem::LinearizationSolve solve;
     std::string                         failure;
+    // Newton/Follow negative curvature: a Krylov solve of the exact
+    // tangent that meets negative curvature stops, and the iteration is
+    // repeated in a trust region (the curvature followed, not projected
+    // away); once that has worked, the solve's later iterations start
+    // there. Not for the predictor, whose energy does not compare.
+    const auto trust_region_allowed = [&](const TangentProjection p) {
+      return policy.follows_negative_curvature(p) &&
+             !state.moving_constraints && properties.has_potential &&
+             parameters.line_search && system.supports_trust_region();
+    };
+    // The trust region starts as large as the last step taken or a tenth
+    // of the solution's size, whichever is larger: the energy then cuts it
+    // to what the model predicts well (trials cost no Krylov solve).
+    const auto start_trust_region = [&]() {
+      if (!std::isfinite(state.trust_radius) && !history.empty())
+        state.trust_radius =
+          std::max(history.back().update, 0.1 * system.solution_scale());
+      if (!(state.trust_radius > 0.))
+        state.trust_radius = std::numeric_limits<double>::quiet_NaN();
+      return std::isfinite(state.trust_radius);
+    };
+    // In the trust region the tangent is exact: the truncated CG copes
+    // with its negative curvature, and near the minimum its steps are
+    // Newton's (quadratic convergence).
+    bool in_trust_region = state.in_trust_region &&
+                           trust_region_allowed(TangentProjection::none) &&
+                           start_trust_region();
+    if (in_trust_region)
+      projection = TangentProjection::none;
+    bool trust_region_tried = in_trust_region;
     // Each fallback projects at more points than the tangent before it:
-    // at most three attempts.
-    row.forcing = forcing(projection);
-    while (!attempt(system,
+    // at most three attempts (and the trust region).
+    row.forcing           = forcing(projection);
+    solve.watch_curvature = trust_region_allowed(projection);
+    while (
+      !(in_trust_region
+          ? attempt_trust_region(system, projection, state, row, solve, failure)
+          : attempt(system,
                     properties,
                     projection,
                     policy.softens_inverting_predictor(),
                     state,
                     row,
                     solve,
-                    failure))
+                    failure)))
       {
+        row.trust_radius       = nan;
+        row.negative_curvature = false;
+        solve.watch_curvature  = false;
+        if (!trust_region_tried && trust_region_allowed(projection) &&
+            start_trust_region())
+          {
+            system.evaluate_trial(0., NonlinearSystem::TrialCheck::none);
+            solve.negative_curvature = false;
+            trust_region_tried = in_trust_region = true;
+            projection                           = TangentProjection::none;
+            row.forcing                          = forcing(projection);
+            continue;
+          }
+        in_trust_region          = false;
+        solve.negative_curvature = false;
         const std::optional<TangentProjection> next =
           policy.fallback(projection);
         if (!next)
@@ -305,6 +454,7 @@ namespace hyperelastic
         projection  = *next;
         row.forcing = forcing(projection);
       }
+    state.in_trust_region = in_trust_region;
     row.projected = projection == TangentProjection::every_point;
     row.projected_where_inverted =
       TangentPolicy::projects_where_inverted(projection, min_J);
@@ -324,9 +474,10 @@ namespace hyperelastic
                          const NonlinearSystem::Properties &properties,
                          const ConvergenceTest             &convergence,
                          const ResidualNorms               &norms,
-                         const NewtonIteration             &row,
+                         NewtonIteration                   &row,
                          const unsigned int                 it,
-                         SolveState                        &state) const
+                         SolveState                        &state,
+                         const TangentPolicy               &policy) const
   {
     // A linear problem is solved by its first full step (to the linear
     // solver's tolerance): a second solve would only polish round-off.
@@ -339,9 +490,30 @@ namespace hyperelastic
         update_lagged_early(system, norms, it, state);
         return false;
       }
+    // A saddle is no equilibrium to stop at when the curvature is
+    // followed: from it Newton goes on in the trust region (the snap).
+    if (policy.follows_negative_curvature(TangentProjection::none) &&
+        properties.has_potential && parameters.line_search &&
+        system.supports_trust_region() && !properties.linear)
+      {
+        if (system.has_negative_curvature())
+          {
+            if (verbose)
+              pcout << "   (converged to a saddle: the exact tangent has "
+                       "negative curvature there; on in the trust region)"
+                    << std::endl;
+            state.in_trust_region = true;
+            return false;
+          }
+        row.probed_stable = true;
+        if (verbose)
+          pcout << "   (no negative curvature at the converged state)"
+                << std::endl;
+      }
     if (system.judge_converged_state(true) ==
         NonlinearSystem::Verdict::accepted)
       return true;
+    row.probed_stable = false;
     // The equations changed (lagged friction): their energy at the current
     // iterate is new.
     state.current            = TrialPoint();
@@ -393,7 +565,8 @@ namespace hyperelastic
   NewtonSolver::solve(NonlinearSystem &system) const
   {
     const ConvergenceTest             convergence(parameters);
-    const TangentPolicy               policy(parameters.tangent);
+    const TangentPolicy               policy(parameters.tangent,
+                               parameters.follow_negative_curvature);
     const NonlinearSystem::Properties properties = system.properties();
     NewtonResult                      result;
     result.residual_merit = parameters.line_search && !properties.has_potential;
@@ -427,7 +600,14 @@ namespace hyperelastic
             table(result));
 
         state.target = convergence.residual_target(norms);
-        if (finished(system, properties, convergence, norms, row, it, state))
+        if (finished(system,
+                     properties,
+                     convergence,
+                     norms,
+                     result.history.back(),
+                     it,
+                     state,
+                     policy))
           return result;
       }
     throw ConvergenceFailure("Newton did not converge in " +

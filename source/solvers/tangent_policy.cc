@@ -3,8 +3,11 @@
 
 namespace hyperelastic
 {
-  TangentPolicy::TangentPolicy(const NewtonTangent tangent)
+  TangentPolicy::TangentPolicy(const NewtonTangent tangent,
+                               const bool          follow_negative_curvature)
       : tangent(tangent)
+      , follow_negative_curvature(follow_negative_curvature &&
+                                  tangent != NewtonTangent::projected)
   {
   }
 
@@ -36,6 +39,13 @@ namespace hyperelastic
         failed == TangentProjection::none)
       return TangentProjection::inverted_points;
     return TangentProjection::every_point;
+  }
+
+  bool
+  TangentPolicy::follows_negative_curvature(
+    const TangentProjection projection) const
+  {
+    return follow_negative_curvature && projection == TangentProjection::none;
   }
 
   bool

@@ -52,11 +52,55 @@ namespace hyperelastic
     /// it; inexact Newton loosens it). If CG fails with a reused hierarchy,
     /// rebuilds it and tries once more. Returns the number of Krylov iterations
     /// (0 for a direct solve).
+    ///
+    /// With @p negative_curvature (CG only: supports_trust_region()), CG
+    /// stops where it meets a direction p with p^T A p <= 0 (A is
+    /// indefinite) or a residual with r^T M^-1 r <= 0 (the preconditioner
+    /// is not positive: built on an indefinite tangent); x is left as CG
+    /// had it, and *negative_curvature is set to true (false otherwise).
     unsigned int
     solve(const dealii::TrilinosWrappers::SparseMatrix &A,
           dealii::TrilinosWrappers::MPI::Vector        &x,
           const dealii::TrilinosWrappers::MPI::Vector  &b,
-          double                                        relative_tolerance);
+          double                                        relative_tolerance,
+          bool *negative_curvature = nullptr);
+
+    /// How solve_in_trust_region() ended.
+    struct TrustRegionSolve
+    {
+      /// Krylov iterations.
+      unsigned int iterations = 0;
+      /// CG met a direction p with p^T A p <= 0 (A is indefinite) and
+      /// followed it to the boundary.
+      bool negative_curvature = false;
+      /// The step ends on the trust region's boundary (|x| = radius).
+      bool on_boundary = false;
+    };
+
+    /// Steihaug-Toint truncated CG: x approximately minimizes
+    /// q(x) = x^T A x / 2 - b^T x with |x| <= @p radius (Euclidean norm),
+    /// preconditioned with the current hierarchy (prepare()). Unlike
+    /// solve(), it does not fail on an indefinite A: the first direction of
+    /// non-positive curvature, or the first iterate beyond the radius, is
+    /// followed to the boundary. Inside it stops at @p relative_tolerance
+    /// as solve() does. An infinite @p radius probes A: x is left where CG
+    /// met negative curvature. Only for iterative solves of a symmetric
+    /// matrix (supports_trust_region()).
+    TrustRegionSolve
+    solve_in_trust_region(const dealii::TrilinosWrappers::SparseMatrix &A,
+                          dealii::TrilinosWrappers::MPI::Vector        &x,
+                          const dealii::TrilinosWrappers::MPI::Vector  &b,
+                          double relative_tolerance,
+                          double radius) const;
+
+    /// Whether solve_in_trust_region() can be used: CG (iterative, a
+    /// symmetric tangent, not a saddle point).
+    bool
+    supports_trust_region() const
+    {
+      return parameters.type != LinearSolverType::direct && symmetric &&
+             !saddle_point;
+    }
 
     /// Krylov solves use @p preconditioner instead of ML AMG on the whole
     /// tangent (the two-level P2 one); it is built when the AMG hierarchy
@@ -148,7 +192,13 @@ namespace hyperelastic
            dealii::TrilinosWrappers::MPI::Vector        &x,
            const dealii::TrilinosWrappers::MPI::Vector  &b,
            double                                        tolerance,
-           unsigned int                                  max_iterations) const;
+           unsigned int                                  max_iterations,
+           bool *negative_curvature = nullptr) const;
+
+    /// z = M^-1 r with the current hierarchy (AMG or the replacement).
+    void
+    precondition(dealii::TrilinosWrappers::MPI::Vector       &z,
+                 const dealii::TrilinosWrappers::MPI::Vector &r) const;
 
     /// CG (GMRES if not symmetric) with @p preconditioner.
     template <typename Preconditioner>

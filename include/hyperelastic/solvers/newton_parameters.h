@@ -42,6 +42,9 @@ namespace hyperelastic
     /// The automatic tangent is exact once the residual is below this
     /// times the first residual of the solve.
     static constexpr double automatic_switch_ratio = 1e-3;
+    /// Where CG on the exact tangent meets negative curvature, the load
+    /// step goes on in a trust region (Steihaug-Toint truncated CG).
+    bool follow_negative_curvature = false;
     /// Inexact Newton: Krylov tolerances from the Eisenstat-Walker forcing
     /// terms (choice 2), at most max_forcing.
     bool   inexact     = true;

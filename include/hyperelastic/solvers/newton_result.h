@@ -28,6 +28,16 @@ namespace hyperelastic
     /// increment extended at zero Poisson's ratio
     /// (NonlinearSystem::solve_linearization).
     bool softened_predictor = false;
+    /// The trust region's radius this iteration was solved in (NaN: a
+    /// Newton step with line search, no trust region).
+    double trust_radius = std::numeric_limits<double>::quiet_NaN();
+    /// The truncated CG met negative curvature (the tangent is indefinite)
+    /// and the step follows it.
+    bool negative_curvature = false;
+    /// The converged state of this (last) iteration was probed for
+    /// negative curvature of the exact tangent and none was found
+    /// (Newton/Follow negative curvature): a minimum, not a saddle.
+    bool probed_stable = false;
     /// Whether the energy had to decrease (sufficient decrease) in this
     /// iteration's line search; false while prescribed displacements are
     /// still being imposed or without a line search.

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/exceptions.h>
 
 #include <hyperelastic/base/lagged_update.h>
 #include <hyperelastic/base/tangent_projection_mode.h>
@@ -84,6 +85,11 @@ namespace hyperelastic
       /// The predictor's update was replaced by a gentler extension of the
       /// constraint increment (set only when asked for).
       bool softened_predictor = false;
+      /// Asked by Newton (where supports_trust_region()): the Krylov
+      /// method stops where it meets negative curvature, and says so in
+      /// negative_curvature; du is then not a Newton direction.
+      bool watch_curvature    = false;
+      bool negative_curvature = false;
     };
 
     /// Solve the linearized system for the direction du, with a Krylov
@@ -102,6 +108,60 @@ namespace hyperelastic
     solve_linearization(double              forcing,
                         bool                soften_predictor,
                         LinearizationSolve &solve) = 0;
+
+    /// Whether solve_linearization_in_trust_region() is available (a
+    /// potential and a Krylov solver that can follow negative curvature).
+    virtual bool
+    supports_trust_region() const
+    {
+      return false;
+    }
+
+    /// What solve_linearization_in_trust_region() found.
+    struct TrustRegionStep
+    {
+      /// The Krylov method met negative curvature: the tangent is
+      /// indefinite, and du follows such a direction to the boundary.
+      bool negative_curvature = false;
+      /// |du| = radius.
+      bool on_boundary = false;
+      /// du^T K du: the quadratic model predicts the energy change
+      /// alpha g^T du + alpha^2 curvature / 2 for the step alpha du.
+      double curvature = 0.;
+      /// |du|.
+      double norm = 0.;
+    };
+
+    /// Like solve_linearization() (never for the linearization that
+    /// imposes the constraint increment), but du approximately minimizes
+    /// the tangent's quadratic model of the energy within |du| <= @p radius
+    /// (Steihaug-Toint truncated CG): along a direction of negative
+    /// curvature it goes to the boundary instead of failing. Only where
+    /// supports_trust_region().
+    virtual void
+    solve_linearization_in_trust_region(double              forcing,
+                                        double              radius,
+                                        LinearizationSolve &solve,
+                                        TrustRegionStep    &step)
+    {
+      (void)forcing;
+      (void)radius;
+      (void)solve;
+      (void)step;
+      Assert(false, dealii::ExcNotImplemented());
+    }
+
+    /// Whether the exact tangent at the current iterate has a direction of
+    /// negative curvature (a saddle, not a minimum), as far as a Krylov
+    /// probe finds one (truncated CG from a fixed pseudo-random right-hand
+    /// side). Only where supports_trust_region(); overwrites the last
+    /// linearization.
+    virtual bool
+    has_negative_curvature()
+    {
+      Assert(false, dealii::ExcNotImplemented());
+      return false;
+    }
 
     /// Derivative of the energy at the current iterate along du (negative for
     /// a descent direction). Valid when du leaves the constraints unchanged.
@@ -228,6 +288,13 @@ namespace hyperelastic
       /// deferral); negative: to be set from the next residual; zero: no
       /// update before convergence.
       double early_lag_residual = -1.;
+      /// The trust region's radius (NaN until the first trust-region
+      /// iteration of the solve): kept through the load step.
+      double trust_radius = std::numeric_limits<double>::quiet_NaN();
+      /// A trust-region iteration succeeded where the tangent's own step
+      /// had failed: the following iterations of the solve start with the
+      /// trust region.
+      bool in_trust_region = false;
     };
 
     /// One iteration from the current iterate: the projection @p policy
@@ -260,19 +327,41 @@ namespace hyperelastic
             NonlinearSystem::LinearizationSolve &solve,
             std::string                         &failure) const;
 
+    /// The automatic tangent's answer to an indefinite tangent: linearize
+    /// with @p projection, solve in the trust region of
+    /// SolveState::trust_radius (Steihaug-Toint truncated CG, which follows
+    /// negative curvature) and let the energy decide: the step alpha du
+    /// (from the feasible step down, halving) is accepted if the energy
+    /// falls by at least Newton/Armijo constant times the quadratic
+    /// model's predicted decrease. The radius then shrinks to a quarter of
+    /// the step where the model predicted poorly or the step was
+    /// shortened, and doubles where a step on the boundary was predicted
+    /// well. Returns false (and the reason) like attempt().
+    bool
+    attempt_trust_region(NonlinearSystem                     &system,
+                         TangentProjection                    projection,
+                         SolveState                          &state,
+                         NewtonIteration                     &row,
+                         NonlinearSystem::LinearizationSolve &solve,
+                         std::string                         &failure) const;
+
     /// The convergence and lagging decision after @p row, the iteration
     /// @p iteration (residual norms @p norms): true once Newton's tests
-    /// pass and the system accepts the state. If instead the system's
-    /// lagged quantities changed, the solve of the new equations starts
-    /// from the current iterate with a fresh budget.
+    /// pass and the system accepts the state. Where @p policy follows
+    /// negative curvature, a converged state at which the exact tangent
+    /// has some (a saddle) is not accepted: Newton goes on from it in the
+    /// trust region, and an accepted state's row says it was probed. If instead
+    /// the system's lagged quantities changed, the solve of the new equations
+    /// starts from the current iterate with a fresh budget.
     bool
     finished(NonlinearSystem                   &system,
              const NonlinearSystem::Properties &properties,
              const ConvergenceTest             &convergence,
              const ResidualNorms               &norms,
-             const NewtonIteration             &row,
+             NewtonIteration                   &row,
              unsigned int                       iteration,
-             SolveState                        &state) const;
+             SolveState                        &state,
+             const TangentPolicy               &policy) const;
 
     /// Before convergence: updates the system's lagged quantities once the
     /// residual has fallen to early_lag_reduction times the first one of

@@ -20,8 +20,12 @@ namespace hyperelastic
   class TangentPolicy
   {
   public:
-    /// The policy of the setting @p tangent.
-    explicit TangentPolicy(NewtonTangent tangent);
+    /// The policy of the setting @p tangent; with
+    /// @p follow_negative_curvature (Newton/Follow negative curvature), the
+    /// negative curvature CG meets on the exact tangent is followed in a
+    /// trust region.
+    explicit TangentPolicy(NewtonTangent tangent,
+                           bool          follow_negative_curvature = false);
 
     /// The projection an iteration starts with. @p first_of_solve: the
     /// first iteration of a solve (or of a solve of lagged equations);
@@ -45,6 +49,14 @@ namespace hyperelastic
     std::optional<TangentProjection>
     fallback(TangentProjection failed) const;
 
+    /// Whether the Krylov solve of an iteration with @p projection watches
+    /// for negative curvature, and the iteration is repeated in a trust
+    /// region (Steihaug-Toint truncated CG on the exact tangent) where it
+    /// meets some: with Newton/Follow negative curvature, for the exact
+    /// tangent (projection none).
+    bool
+    follows_negative_curvature(TangentProjection projection) const;
+
     /// Whether the predictor's update may be replaced by a gentler
     /// extension of the constraint increment where it would invert cells
     /// (NonlinearSystem::solve_linearization): asked by the automatic
@@ -67,5 +79,6 @@ namespace hyperelastic
 
   private:
     const NewtonTangent tangent;
+    const bool          follow_negative_curvature;
   };
 } // namespace hyperelastic
