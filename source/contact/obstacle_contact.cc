@@ -760,11 +760,7 @@ namespace hyperelastic
                                    lagged[i].normal_force_after(elapsed)));
         largest = std::max(largest, next[i].normal_force);
       }
-    const LaggedUpdate outcome =
-      lagging.decide(change, largest, moment, comm);
-    if (outcome == LaggedUpdate::updated)
-      lagged = std::move(next);
-    return outcome;
+    return lagging.take_if_changed(change, largest, moment, comm, lagged, next);
   }
 
   template <int dim>

@@ -618,11 +618,7 @@ namespace hyperelastic
       }
     for (const auto &[pair, force] : before)
       change = std::max(change, force);
-    const LaggedUpdate outcome =
-      lagging.decide(change, largest, moment, comm);
-    if (outcome == LaggedUpdate::updated)
-      lagged = std::move(next);
-    return outcome;
+    return lagging.take_if_changed(change, largest, moment, comm, lagged, next);
   }
 
   template <int dim>

@@ -128,9 +128,9 @@ namespace hyperelastic
     // starts at its answer, however far it has gone (issue 41). With
     // contact the guess could cross an obstacle, and the iterates must
     // stay on its side: frictionless contact starts at u_n; friction takes
-    // the guess as far as it is feasible (below, once the end-state map is
-    // set), since its first linearization at u_n would be the stiff stick
-    // branch of every sliding vertex (zero slip).
+    // the guess where all of it is feasible (below, once the end-state map
+    // is set), since its first linearization at u_n would be the stiff
+    // stick branch of every sliding vertex (zero slip).
     const bool guess = c > 0. && (!context.contact.active() ||
                                   context.contact.has_friction());
     if (guess)
@@ -164,25 +164,27 @@ namespace hyperelastic
                                           VectorType           &u,
                                           VectorType           &u_ghosted)
   {
-    // new_velocity holds the guess. Contact shortens its increment to the
-    // fraction that keeps every vertex off the obstacles (moving jointly)
-    // and the boundary off itself; the obstacles stop as far.
+    // new_velocity holds the guess. With contact it is taken only if its
+    // whole increment keeps every vertex off the obstacles (moving
+    // jointly) and the boundary off itself: a guess cut short would stop
+    // vertices just short of the obstacles, deep in the barrier (an
+    // impact's acceleration extrapolated), where Newton crawls.
     double fraction = 1.;
     if (context.contact.active())
       {
         new_velocity -= converged.u;
-        fraction = std::min(1.,
-                            context.elasticity.largest_feasible_step(
-                              converged.u, new_velocity, solved));
+        fraction = context.elasticity.largest_feasible_step(converged.u,
+                                                            new_velocity,
+                                                            solved);
         u = converged.u;
-        u.add(fraction, new_velocity);
+        u += new_velocity;
       }
     else
       u = new_velocity;
     u_ghosted = u;
     // A guess outside the model's domain (a cell inverted by a violent
     // extrapolation) is not taken either.
-    if (!(fraction > 0.) ||
+    if (!(fraction >= 1.) ||
         (!context.material.defined_for_inverted_elements() &&
          !(context.elasticity.evaluate(u_ghosted, solved, false).min_J > 0.)))
       {
@@ -191,7 +193,7 @@ namespace hyperelastic
         return;
       }
     if (context.contact.active())
-      context.elasticity.advance(fraction, solved);
+      context.elasticity.advance(1., solved);
   }
 
   template <int dim>

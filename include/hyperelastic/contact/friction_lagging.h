@@ -12,6 +12,9 @@
 
 #include <hyperelastic/base/lagged_update.h>
 
+#include <utility>
+#include <vector>
+
 namespace hyperelastic
 {
   class FrictionLagging
@@ -51,6 +54,22 @@ namespace hyperelastic
         return LaggedUpdate::deferred;
       ++updates;
       return LaggedUpdate::updated;
+    }
+
+    /// decide(), and if updated, @p next becomes the term's @p lagged.
+    template <typename Lagged>
+    LaggedUpdate
+    take_if_changed(const double         change,
+                    const double         largest,
+                    const LagMoment      moment,
+                    const MPI_Comm       comm,
+                    std::vector<Lagged> &lagged,
+                    std::vector<Lagged> &next)
+    {
+      const LaggedUpdate outcome = decide(change, largest, moment, comm);
+      if (outcome == LaggedUpdate::updated)
+        lagged = std::move(next);
+      return outcome;
     }
 
   private:

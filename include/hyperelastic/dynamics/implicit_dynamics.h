@@ -87,8 +87,7 @@ namespace hyperelastic
 
   private:
     /// Starts Newton at the guess held in new_velocity (the step's end at
-    /// constant acceleration), its increment shortened to the feasible
-    /// fraction with contact; at u_n if the guess inverts a cell of a model undefined
+    /// constant acceleration), with contact only if all of it is feasible; at u_n if the guess inverts a cell of a model undefined
     /// there. @p solved: the time the step is solved at.
     void
     start_from_guess(const ConvergedState &converged,
