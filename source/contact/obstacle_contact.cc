@@ -367,7 +367,7 @@ namespace hyperelastic
                              const Point<dim>  &x,
                              const Placed      &o,
                              const double       eps,
-                             const double       elapsed,
+                             const double       since_start,
                              const bool         with_stiffness) const
   {
     PairState      state;
@@ -404,7 +404,7 @@ namespace hyperelastic
     if (lagged.empty() || !(o.friction > 0.))
       return state;
     const Lagged &l      = lagged[a * obstacles.size() + k];
-    const double  lambda = l.normal_force_after(elapsed);
+    const double  lambda = l.normal_force_after(since_start);
     if (!(lambda > 0.))
       return state;
     // The slip of the step relative to the obstacle, in the lagged tangent
@@ -437,15 +437,15 @@ namespace hyperelastic
     const std::vector<Placed> where = placed(obstacle_time(t));
     const double              eps =
       friction_smoothing(end_time(t) - std::min(step_start, t));
-    const double elapsed = std::max(0., end_time(t) - step_start);
-    bool         crossed = false;
+    const double since_start = elapsed(t);
+    bool         crossed     = false;
     for (unsigned int a = 0; a < vertices.size(); ++a)
       {
         const Point<dim> x = position(a, u);
         for (unsigned int k = 0; k < obstacles.size(); ++k)
           {
             PairState p =
-              pair(a, k, x, where[k], eps, elapsed, with_stiffness);
+              pair(a, k, x, where[k], eps, since_start, with_stiffness);
             // The potential w V(x_end) / c in the solved state: gradient
             // w V'(x_end), Hessian w c V''(x_end).
             p.energy *= end_state.energy_factor();
@@ -751,13 +751,13 @@ namespace hyperelastic
     if (!has_friction() || !lagging.may_update())
       return LaggedUpdate::unchanged;
     std::vector<Lagged> next    = lagged_at(u, obstacle_time(t));
-    const double        elapsed = std::max(0., end_time(t) - step_start);
+    const double        since_start = elapsed(t);
     double              change = 0., largest = 0.;
     for (unsigned int i = 0; i < next.size(); ++i)
       {
         change = std::max(change,
                           std::abs(next[i].normal_force -
-                                   lagged[i].normal_force_after(elapsed)));
+                                   lagged[i].normal_force_after(since_start)));
         largest = std::max(largest, next[i].normal_force);
       }
     return lagging.take_if_changed(change, largest, moment, comm, lagged, next);

@@ -178,12 +178,7 @@ namespace hyperelastic
                  current.residual_noise + trial.residual_noise;
         if (ok)
           {
-            row.step_length    = alpha;
-            row.energy_tested  = test_energy;
-            row.energy_before  = current.energy;
-            row.energy         = trial.energy;
-            row.energy_noise   = trial.energy_noise;
-            row.min_J          = trial.min_J;
+            take_trial(alpha, test_energy, current, trial, row);
             row.trial_residual = trial.residual;
             return true;
           }
@@ -319,12 +314,7 @@ namespace hyperelastic
                 else if (actual > 0.75 * predicted && step.on_boundary &&
                          alpha == 1.)
                   state.trust_radius *= 2.;
-                row.step_length   = alpha;
-                row.energy_tested = true;
-                row.energy_before = state.current.energy;
-                row.energy        = trial.energy;
-                row.energy_noise  = trial.energy_noise;
-                row.min_J         = trial.min_J;
+                take_trial(alpha, true, state.current, trial, row);
                 return true;
               }
             ++row.backtracks;
@@ -469,6 +459,21 @@ namespace hyperelastic
     return row;
   }
 
+  void
+  NewtonSolver::take_trial(const double      alpha,
+                           const bool        energy_tested,
+                           const TrialPoint &current,
+                           const TrialPoint &trial,
+                           NewtonIteration  &row)
+  {
+    row.step_length   = alpha;
+    row.energy_tested = energy_tested;
+    row.energy_before = current.energy;
+    row.energy        = trial.energy;
+    row.energy_noise  = trial.energy_noise;
+    row.min_J         = trial.min_J;
+  }
+
   bool
   NewtonSolver::finished(NonlinearSystem                   &system,
                          const NonlinearSystem::Properties &properties,
@@ -514,14 +519,21 @@ namespace hyperelastic
         NonlinearSystem::Verdict::accepted)
       return true;
     row.probed_stable = false;
+    lagged_quantities_updated(it, state);
+    return false;
+  }
+
+  void
+  NewtonSolver::lagged_quantities_updated(const unsigned int it,
+                                          SolveState        &state) const
+  {
     // The equations changed (lagged friction): their energy at the current
-    // iterate is new.
+    // iterate is new, and they get the full budget.
     state.current            = TrialPoint();
     state.budget_start       = it;
     state.early_lag_residual = -1.;
     if (verbose)
       pcout << "   (lagged quantities updated)" << std::endl;
-    return false;
   }
 
   void
@@ -554,11 +566,7 @@ namespace hyperelastic
         state.early_lag_residual *= early_lag_reduction;
         return;
       }
-    state.current            = TrialPoint();
-    state.budget_start       = it;
-    state.early_lag_residual = -1.;
-    if (verbose)
-      pcout << "   (lagged quantities updated)" << std::endl;
+    lagged_quantities_updated(it, state);
   }
 
   NewtonResult

@@ -295,14 +295,14 @@ namespace hyperelastic
 
     /// Vertex @p a at @p x against obstacle @p k placed at @p o; the
     /// stiffness only if @p with_stiffness. Friction's eps: @p eps; the
-    /// time since the step's start: @p elapsed (extrapolated lambda).
+    /// time since the step's start: @p since_start (extrapolated lambda).
     PairState
     pair(unsigned int              a,
          unsigned int              k,
          const dealii::Point<dim> &x,
          const Placed             &o,
          double                    eps,
-         double                    elapsed,
+         double                    since_start,
          bool                      with_stiffness) const;
 
     /// Calls @p f(a, k, pair) for every vertex a and obstacle k (pairs
@@ -331,6 +331,14 @@ namespace hyperelastic
     {
       return std::isfinite(reached) ? step_start + end_state.c * (t - step_start)
                                     : t;
+    }
+
+    /// The time from the step's start to the end time of @p t (not
+    /// negative): how far friction's extrapolated lambda has come.
+    double
+    elapsed(double t) const
+    {
+      return std::max(0., end_time(t) - step_start);
     }
 
     /// Where the obstacles are evaluated for load factor @p t: at the end

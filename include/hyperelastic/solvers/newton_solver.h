@@ -363,6 +363,21 @@ namespace hyperelastic
              SolveState                        &state,
              const TangentPolicy               &policy) const;
 
+    /// The row of an iteration that takes the trial at step length @p alpha
+    /// from @p current (energy tested or not): step, energies, min J.
+    static void
+    take_trial(double            alpha,
+               bool              energy_tested,
+               const TrialPoint &current,
+               const TrialPoint &trial,
+               NewtonIteration  &row);
+
+    /// The lagged quantities changed at iteration @p iteration: the
+    /// current iterate's energy is unknown, the new equations get a fresh
+    /// budget and their own early-update threshold; the table says so.
+    void
+    lagged_quantities_updated(unsigned int iteration, SolveState &state) const;
+
     /// Before convergence: updates the system's lagged quantities once the
     /// residual has fallen to early_lag_reduction times the first one of
     /// the current equations (SolveState::early_lag_residual); the new
