@@ -11,6 +11,7 @@
 #include <hyperelastic/contact/contact_layer.h>
 #include <hyperelastic/formulation/formulation_registry.h>
 #include <hyperelastic/mesh/bodies.h>
+#include <hyperelastic/mesh/boundary_regions.h>
 #include <hyperelastic/mesh/mesh.h>
 #include <hyperelastic/problem.h>
 #include <hyperelastic/solvers/rigid_body_modes.h>
@@ -63,7 +64,7 @@ namespace hyperelastic
       return;
     is_set_up = true;
     TimerOutput::Scope                 scope(timer, "mesh and setup");
-    const std::set<types::boundary_id> mesh_ids = setup_mesh();
+    std::set<types::boundary_id> mesh_ids = setup_mesh();
     // The stages after the mesh, each from the end of the one before.
     Timer      stage_timer;
     const auto end_stage = [&](const std::string &name) {
@@ -81,8 +82,10 @@ namespace hyperelastic
       }
     materials =
       std::make_unique<MaterialRegions<dim>>(models, cell_regions.of_cell);
+    LoadingParameters loading = parameters.loading;
+    boundary_regions = assign_boundary_regions(*triangulation, loading, mesh_ids);
     boundary_conditions =
-      std::make_unique<BoundaryConditions<dim>>(parameters.loading, mesh_ids);
+      std::make_unique<BoundaryConditions<dim>>(loading, mesh_ids);
     if (load_editor)
       load_editor(*boundary_conditions);
     dof_handler.distribute_dofs(fe);

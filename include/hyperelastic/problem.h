@@ -21,6 +21,7 @@
 #include <hyperelastic/formulation/formulation.h>
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/materials/material.h>
+#include <hyperelastic/mesh/boundary_regions.h>
 #include <hyperelastic/mesh/cell_regions.h>
 #include <hyperelastic/output/output.h>
 #include <hyperelastic/output/step_postprocessor.h>
@@ -243,6 +244,8 @@ namespace hyperelastic
     /// of each cell, and both as the material of every cell.
     std::vector<std::unique_ptr<Material<dim>>> region_models;
     CellRegions                                 cell_regions;
+    /// The faces selected by 'Boundary region' conditions and their ids.
+    BoundaryRegions boundary_regions;
     std::unique_ptr<MaterialRegions<dim>>       materials;
     /// The same models in 3D, for the plane-strain stress in the output
     /// (null without VTU output), region 0 first.
