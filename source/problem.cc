@@ -94,9 +94,13 @@ namespace hyperelastic
     setup_system(pressure_dofs);
     end_stage("system");
     if (parameters.linear_solver.type == LinearSolverType::cg_amg)
-      linear_solver.set_near_null_space(rigid_body_modes(mapping, dof_handler),
-                                        n_rigid_body_modes<dim>,
-                                        dim);
+      {
+        linear_solver.set_near_null_space(rigid_body_modes(mapping,
+                                                           dof_handler),
+                                          n_rigid_body_modes<dim>,
+                                          dim);
+        linear_solver.set_stiffness_contrast(stiffness_contrast());
+      }
     end_stage("null space");
     elasticity = std::make_unique<ElasticityOperator<dim>>(
       dof_handler,
@@ -208,6 +212,26 @@ namespace hyperelastic
     linear_solver.set_symmetric(elasticity->is_conservative());
     formulation->configure_linear_solver(
       linear_solver, dof_handler, mapping, *materials, pressure_dofs);
+  }
+
+  template <int dim>
+  double
+  Problem<dim>::stiffness_contrast() const
+  {
+    // The small-strain stiffness lambda + 2 mu of each region with cells
+    // (an incompressible region's is infinite: its own stiffness then
+    // comes from the mixed formulation's pressure, and mu decides).
+    double smallest = std::numeric_limits<double>::infinity(), largest = 0.;
+    for (unsigned int r = 0; r < materials->n_regions(); ++r)
+      if (cell_regions.n_cells.empty() || cell_regions.n_cells[r] > 0)
+        {
+          const LameParameters m = materials->model(r).small_strain_moduli();
+          const double         stiffness =
+            std::isfinite(m.lambda) ? m.lambda + 2. * m.mu : 2. * m.mu;
+          smallest = std::min(smallest, stiffness);
+          largest  = std::max(largest, stiffness);
+        }
+    return smallest > 0. ? largest / smallest : 1.;
   }
 
   template <int dim>

@@ -177,6 +177,11 @@ namespace hyperelastic
     /// regions). Collective.
     LameParameters
     contact_moduli() const;
+    /// The largest over the smallest small-strain stiffness lambda + 2 mu of
+    /// the materials with cells (1 for one material): the linear solver's
+    /// 'AMG for contrast = auto'.
+    double
+    stiffness_contrast() const;
     /// The density of each region (region 0 first); empty without regions.
     std::vector<double>
     region_densities() const;
