@@ -168,7 +168,7 @@ namespace hyperelastic
     /// Each triangle's connected component (over shared edges).
     std::vector<unsigned int>
     orient_components(SurfaceTriangles  &surface,
-                      const std::string &entry,
+                      const std::string &where,
                       unsigned int      &n_components,
                       std::size_t       &n_turned)
     {
@@ -193,8 +193,8 @@ namespace hyperelastic
               edges[{std::min(a, b), std::max(a, b)}].size();
             if (users != 2)
               throw InputError(
-                "scene entry '" + entry +
-                "': the surface is not closed: the edge from " +
+                where +
+                ": the surface is not closed: the edge from " +
                 coordinates(surface.vertices[a]) + " to " +
                 coordinates(surface.vertices[b]) + " belongs to " +
                 std::to_string(users) + " triangle" + (users == 1 ? "" : "s") +
@@ -245,8 +245,8 @@ namespace hyperelastic
                     }
                   else if (!agree)
                     throw InputError(
-                      "scene entry '" + entry +
-                      "': the surface cannot be oriented (a Moebius strip "
+                      where +
+                      ": the surface cannot be oriented (a Moebius strip "
                       "or Klein bottle) at the edge from " +
                       coordinates(surface.vertices[a]) + " to " +
                       coordinates(surface.vertices[b]));
@@ -302,7 +302,7 @@ namespace hyperelastic
   } // namespace
 
   std::size_t
-  check_closed_surface(SurfaceTriangles &surface, const std::string &entry)
+  check_closed_surface(SurfaceTriangles &surface, const std::string &where)
   {
     const double scale = extent(surface);
     // Degenerate triangles: a repeated vertex or no area.
@@ -317,13 +317,13 @@ namespace hyperelastic
             .norm();
         if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0] ||
             !(area > 1e-14 * scale * scale))
-          throw InputError("scene entry '" + entry +
-                           "': the surface has a degenerate (zero area) " +
+          throw InputError(where +
+                           ": the surface has a degenerate (zero area) " +
                            triangle_text(surface, t));
       }
     unsigned int n_components = 0;
     std::size_t  n_turned     = 0;
-    orient_components(surface, entry, n_components, n_turned);
+    orient_components(surface, where, n_components, n_turned);
 
     // Self-intersections: every pair of triangles whose boxes overlap and
     // which share no vertex.
@@ -360,8 +360,8 @@ namespace hyperelastic
               adjacent = adjacent || std::find(b.begin(), b.end(), v) != b.end();
             if (!adjacent &&
                 triangles_intersect(surface, t, u, scale * scale * scale))
-              throw InputError("scene entry '" + entry +
-                               "': the surface intersects itself: " +
+              throw InputError(where +
+                               ": the surface intersects itself: " +
                                triangle_text(surface, t) + " and " +
                                triangle_text(surface, u) +
                                " intersect (numbered from 1 in the file's "
@@ -435,7 +435,7 @@ namespace hyperelastic
   GmshMesh<3>
   tetrahedralise(const SurfaceTriangles &surface,
                  const double            size,
-                 const std::string      &entry)
+                 const std::string      &where)
   {
     // The surface is oriented already; its components (separate bodies)
     // get one volume each, bounded by one discrete surface per group.
@@ -443,7 +443,7 @@ namespace hyperelastic
     unsigned int     n_components = 0;
     std::size_t      n_turned     = 0;
     const std::vector<unsigned int> component =
-      orient_components(oriented, entry, n_components, n_turned);
+      orient_components(oriented, where, n_components, n_turned);
 
     GmshMesh<3> mesh;
     std::string failure;
@@ -577,8 +577,8 @@ namespace hyperelastic
         failure = e.what();
       }
     if (!failure.empty() || mesh.cells.empty())
-      throw InputError("scene entry '" + entry +
-                       "': gmsh could not fill the surface with tetrahedra" +
+      throw InputError(where +
+                       ": gmsh could not fill the surface with tetrahedra" +
                        (failure.empty() ? std::string() : ": " + failure));
     for (unsigned int d = 0; d < 3; ++d)
       {
@@ -755,13 +755,15 @@ namespace hyperelastic
         dealii::Timer     timer;
         SurfaceTriangles  surface = read_surface_file(parameters.file, entry);
         const std::size_t n_input = surface.triangles.size();
-        const std::size_t n_turned = check_closed_surface(surface, entry);
+        const std::string where =
+          "scene entry '" + entry + "' = '" + parameters.file + "'";
+        const std::size_t n_turned = check_closed_surface(surface, where);
         const double mean = mean_edge_length(surface);
         const double size =
           parameters.mesh_size > 0. ? parameters.mesh_size : mean;
         if (parameters.mesh_size > 0.)
           surface = split_to_size(surface, parameters.mesh_size);
-        GmshMesh<3>      mesh    = tetrahedralise(surface, size, entry);
+        GmshMesh<3>      mesh    = tetrahedralise(surface, size, where);
         const double     elapsed = timer.wall_time();
         const TetQuality quality = tet_quality(mesh);
 

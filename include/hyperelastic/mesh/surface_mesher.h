@@ -21,9 +21,9 @@ namespace hyperelastic
   /// intersect (else the pair is named), no triangle is degenerate.
   /// Triangles oriented against their neighbours are turned silently so
   /// that all face outward; returns how many were turned. Errors are
-  /// InputErrors naming @p entry.
+  /// InputErrors starting with @p where (the scene entry and file).
   std::size_t
-  check_closed_surface(SurfaceTriangles &surface, const std::string &entry);
+  check_closed_surface(SurfaceTriangles &surface, const std::string &where);
 
   /// The volume enclosed by an outward oriented closed surface.
   double
@@ -45,7 +45,7 @@ namespace hyperelastic
   GmshMesh<3>
   tetrahedralise(const SurfaceTriangles &surface,
                  double                  size,
-                 const std::string      &entry);
+                 const std::string      &where);
 
   /// Element quality: the smallest dihedral angle (degrees) and the radius
   /// ratio 3 r_in / r_out (1 for the regular tetrahedron).
