@@ -382,6 +382,37 @@ namespace
 
     // The cube: binary STL (no groups), ASCII STL with a solid per face;
     // one triangle listed inward (turned back).
+    // A hollow sphere: the icosphere and, inside, a smaller one (a cavity)
+    // in one file, both listed outward.
+    {
+      SurfaceTriangles hollow = read_surface_file(folder + "/sphere.obj");
+      const std::size_t n = hollow.vertices.size();
+      for (std::size_t v = 0; v < n; ++v)
+        hollow.vertices.push_back(Point<3>(0.5 * hollow.vertices[v]));
+      for (std::size_t t = 0, m = hollow.triangles.size(); t < m; ++t)
+        {
+          auto inner = hollow.triangles[t];
+          for (unsigned int &v : inner)
+            v += n;
+          hollow.triangles.push_back(inner);
+          hollow.groups.push_back(3);
+        }
+      hollow.group_names.push_back("cavity");
+      checker.is_true("hollow sphere: the cavity's 1280 triangles turned inward",
+                      check_closed_surface(hollow, "test") == 0 &&
+                        hollow.triangles[1280][1] == sphere.triangles[0][2] + n);
+      checker.close("hollow sphere: enclosed volume (7/8 of the sphere's)",
+                    enclosed_volume(hollow),
+                    7. / 8. * exact,
+                    exact,
+                    1e-13);
+      check_volume_mesh(checker,
+                        "hollow sphere",
+                        hollow,
+                        tetrahedralise(hollow, 0.15, "test"),
+                        1e-12);
+    }
+
     SurfaceTriangles binary = read_surface_file(folder + "/cube_binary.stl");
     checker.is_true("binary STL: 8 vertices, 12 triangles, no groups",
                     binary.vertices.size() == 8 &&
@@ -530,5 +561,5 @@ main(int argc, char *argv[])
       MPI_Barrier(MPI_COMM_WORLD);
     },
     MPI_COMM_WORLD);
-  return checker.exit_code(status, MPI_COMM_WORLD);
+  return checker.exit_code(status);
 }

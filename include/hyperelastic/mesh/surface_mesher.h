@@ -20,12 +20,14 @@ namespace hyperelastic
   /// named with its coordinates), no two triangles without a common vertex
   /// intersect (else the pair is named), no triangle is degenerate.
   /// Triangles oriented against their neighbours are turned silently so
-  /// that all face outward; returns how many were turned. Errors are
+  /// that all face outward (a closed part inside another, a cavity, faces
+  /// into it); returns how many were turned. Errors are
   /// InputErrors starting with @p where (the scene entry and file).
   std::size_t
   check_closed_surface(SurfaceTriangles &surface, const std::string &where);
 
-  /// The volume enclosed by an outward oriented closed surface.
+  /// The volume enclosed by an outward oriented closed surface (cavities
+  /// facing inward count negative).
   double
   enclosed_volume(const SurfaceTriangles &surface);
 
