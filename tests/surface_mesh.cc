@@ -325,6 +325,18 @@ namespace
     write_obj(sphere, folder + "/sphere.obj");
     write_ply_binary(sphere, folder + "/sphere.ply");
     write_off(sphere, folder + "/sphere.off");
+    {
+      // Each triangle with its own three corners, and an unused vertex.
+      std::ofstream out(folder + "/sphere_soup.obj");
+      out << std::setprecision(17) << "v 5 5 5\n";
+      for (const auto &v : sphere.triangles)
+        for (const unsigned int k : v)
+          out << "v " << sphere.vertices[k][0] << ' ' << sphere.vertices[k][1]
+              << ' ' << sphere.vertices[k][2] << '\n';
+      for (std::size_t t = 0; t < sphere.triangles.size(); ++t)
+        out << "f " << 3 * t + 2 << ' ' << 3 * t + 3 << ' ' << 3 * t + 4
+            << '\n';
+    }
     SurfaceTriangles cube = unit_cube();
     write_stl(cube, folder + "/cube.stl", false);
     std::swap(cube.triangles[3][1], cube.triangles[3][2]);
@@ -357,6 +369,19 @@ namespace
                                   read.triangles.size(), 0)
                           : read.groups == sphere.groups);
       }
+    {
+      const SurfaceTriangles soup =
+        read_surface_file(folder + "/sphere_soup.obj");
+      checker.is_true("OBJ with separate corners per face and an unused "
+                      "vertex: joined to the sphere's 642 vertices",
+                      soup.vertices.size() == sphere.vertices.size() &&
+                        soup.triangles.size() == sphere.triangles.size());
+      checker.close("OBJ with separate corners: enclosed volume",
+                    enclosed_volume(soup),
+                    exact,
+                    exact,
+                    1e-14);
+    }
     checker.close("icosphere (1280 triangles): polyhedral volume against "
                   "the sphere's 4 pi / 3 (within 1 %)",
                   exact,

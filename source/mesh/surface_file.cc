@@ -1,6 +1,8 @@
 // Reading closed surfaces: OBJ (v, f, g, o), STL (ASCII, several solids as
 // groups, and binary), PLY (ASCII and binary little-endian; an integer face
 // property as groups) and OFF into one triangle list on shared vertices.
+#include <deal.II/base/types.h>
+
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/surface_file.h>
 
@@ -539,6 +541,33 @@ namespace hyperelastic
     // No groups at all: boundary id 0 everywhere.
     if (surface.group_names.empty())
       std::fill(surface.groups.begin(), surface.groups.end(), 0);
+    // Vertices at equal coordinates joined (exporters that write each
+    // face's corners separately), those no triangle uses dropped; the
+    // others keep their order.
+    std::map<std::array<double, 3>, unsigned int> first_at;
+    std::vector<unsigned int> joined(surface.vertices.size());
+    for (unsigned int v = 0; v < surface.vertices.size(); ++v)
+      {
+        const Point<3> &x = surface.vertices[v];
+        joined[v] = first_at.emplace(std::array<double, 3>{{x[0], x[1], x[2]}}, v)
+                      .first->second;
+      }
+    std::vector<unsigned int> number(surface.vertices.size(),
+                                     dealii::numbers::invalid_unsigned_int);
+    for (const auto &triangle : surface.triangles)
+      for (const unsigned int v : triangle)
+        number[joined[v]] = 0;
+    std::vector<Point<3>> used;
+    for (unsigned int v = 0; v < surface.vertices.size(); ++v)
+      if (number[v] == 0)
+        {
+          number[v] = used.size();
+          used.push_back(surface.vertices[v]);
+        }
+    for (auto &triangle : surface.triangles)
+      for (unsigned int &v : triangle)
+        v = number[joined[v]];
+    surface.vertices = std::move(used);
     return surface;
   }
 } // namespace hyperelastic

@@ -26,7 +26,9 @@ namespace hyperelastic
 
   /// Reads @p file_name by its extension (.obj, .stl, .ply, .off, any
   /// case). Polygons are split into triangles around their first vertex;
-  /// STL's separate triangles are joined at equal coordinates. Errors are
+  /// vertices at equal coordinates are joined (STL's separate triangles,
+  /// exporters writing each face's corners) and vertices no triangle uses
+  /// dropped, the others kept in the file's order. Errors are
   /// InputErrors naming the scene entry @p entry.
   SurfaceTriangles
   read_surface_file(const std::string &file_name,
