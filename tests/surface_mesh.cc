@@ -50,22 +50,22 @@ namespace
     SurfaceTriangles s;
     const double     t = (1. + std::sqrt(5.)) / 2.;
     // vertices: 0-3 (x, y, 0), 4-7 (0, y, z), 8-11 (x, 0, z)
-    s.vertices = {Point<3>(-1, t, 0),
-                  Point<3>(1, t, 0),
-                  Point<3>(-1, -t, 0),
-                  Point<3>(1, -t, 0),
-                  Point<3>(0, -1, t),
-                  Point<3>(0, 1, t),
-                  Point<3>(0, -1, -t),
-                  Point<3>(0, 1, -t),
-                  Point<3>(t, 0, -1),
-                  Point<3>(t, 0, 1),
-                  Point<3>(-t, 0, -1),
-                  Point<3>(-t, 0, 1)};
-    s.triangles = {{{0, 11, 5}}, {{0, 5, 1}},  {{0, 1, 7}},   {{0, 7, 10}},
-                   {{0, 10, 11}}, {{1, 5, 9}}, {{5, 11, 4}},  {{11, 10, 2}},
-                   {{10, 7, 6}},  {{7, 1, 8}}, {{3, 9, 4}},   {{3, 4, 2}},
-                   {{3, 2, 6}},   {{3, 6, 8}}, {{3, 8, 9}},   {{4, 9, 5}},
+    s.vertices  = {Point<3>(-1, t, 0),
+                   Point<3>(1, t, 0),
+                   Point<3>(-1, -t, 0),
+                   Point<3>(1, -t, 0),
+                   Point<3>(0, -1, t),
+                   Point<3>(0, 1, t),
+                   Point<3>(0, -1, -t),
+                   Point<3>(0, 1, -t),
+                   Point<3>(t, 0, -1),
+                   Point<3>(t, 0, 1),
+                   Point<3>(-t, 0, -1),
+                   Point<3>(-t, 0, 1)};
+    s.triangles = {{{0, 11, 5}},  {{0, 5, 1}},  {{0, 1, 7}},  {{0, 7, 10}},
+                   {{0, 10, 11}}, {{1, 5, 9}},  {{5, 11, 4}}, {{11, 10, 2}},
+                   {{10, 7, 6}},  {{7, 1, 8}},  {{3, 9, 4}},  {{3, 4, 2}},
+                   {{3, 2, 6}},   {{3, 6, 8}},  {{3, 8, 9}},  {{4, 9, 5}},
                    {{2, 4, 11}},  {{6, 2, 10}}, {{8, 6, 7}},  {{9, 8, 1}}};
     for (Point<3> &x : s.vertices)
       x /= x.norm();
@@ -141,8 +141,8 @@ namespace
         if (s.groups[t] != group)
           out << "g " << s.group_names[s.groups[t] - 1] << '\n';
         group = s.groups[t];
-        out << "f " << s.triangles[t][0] + 1 << "//1 "
-            << s.triangles[t][1] + 1 << " " << s.triangles[t][2] + 1 << '\n';
+        out << "f " << s.triangles[t][0] + 1 << "//1 " << s.triangles[t][1] + 1
+            << " " << s.triangles[t][2] + 1 << '\n';
       }
   }
 
@@ -244,7 +244,7 @@ namespace
                  " degrees, radius ratio mean " +
                  std::to_string(q.mean_radius_ratio) + ", smallest " +
                  std::to_string(q.min_radius_ratio));
-    double       volume = 0.;
+    double       volume   = 0.;
     unsigned int negative = 0;
     for (const auto &cell : mesh.cells)
       {
@@ -348,7 +348,7 @@ namespace
   {
     checker.section("surface files and tetrahedralisation");
     const SurfaceTriangles sphere = icosphere(3);
-    const double exact = enclosed_volume(sphere);
+    const double           exact  = enclosed_volume(sphere);
     for (const std::string extension : {"obj", "ply", "off"})
       {
         const SurfaceTriangles read =
@@ -365,8 +365,8 @@ namespace
                         extension == "off"
                           ? read.group_names.empty() &&
                               read.groups ==
-                                std::vector<unsigned int>(
-                                  read.triangles.size(), 0)
+                                std::vector<unsigned int>(read.triangles.size(),
+                                                          0)
                           : read.groups == sphere.groups);
       }
     {
@@ -402,16 +402,19 @@ namespace
     const SurfaceTriangles split = split_to_size(surface, 0.1);
     checker.is_true("sphere split to size 0.1: 4 x 1280 triangles",
                     split.triangles.size() == 4 * 1280);
-    check_volume_mesh(
-      checker, "sphere split", split, tetrahedralise(split, 0.1, "test"), 1e-12);
+    check_volume_mesh(checker,
+                      "sphere split",
+                      split,
+                      tetrahedralise(split, 0.1, "test"),
+                      1e-12);
 
     // The cube: binary STL (no groups), ASCII STL with a solid per face;
     // one triangle listed inward (turned back).
     // A hollow sphere: the icosphere and, inside, a smaller one (a cavity)
     // in one file, both listed outward.
     {
-      SurfaceTriangles hollow = read_surface_file(folder + "/sphere.obj");
-      const std::size_t n = hollow.vertices.size();
+      SurfaceTriangles  hollow = read_surface_file(folder + "/sphere.obj");
+      const std::size_t n      = hollow.vertices.size();
       for (std::size_t v = 0; v < n; ++v)
         hollow.vertices.push_back(Point<3>(0.5 * hollow.vertices[v]));
       for (std::size_t t = 0, m = hollow.triangles.size(); t < m; ++t)
@@ -423,9 +426,10 @@ namespace
           hollow.groups.push_back(3);
         }
       hollow.group_names.push_back("cavity");
-      checker.is_true("hollow sphere: the cavity's 1280 triangles turned inward",
-                      check_closed_surface(hollow, "test") == 0 &&
-                        hollow.triangles[1280][1] == sphere.triangles[0][2] + n);
+      checker.is_true(
+        "hollow sphere: the cavity's 1280 triangles turned inward",
+        check_closed_surface(hollow, "test") == 0 &&
+          hollow.triangles[1280][1] == sphere.triangles[0][2] + n);
       checker.close("hollow sphere: enclosed volume (7/8 of the sphere's)",
                     enclosed_volume(hollow),
                     7. / 8. * exact,
@@ -445,7 +449,8 @@ namespace
                       binary.group_names.empty());
     checker.is_true("binary STL: one triangle turned outward",
                     check_closed_surface(binary, "test") == 1);
-    checker.close("cube: enclosed volume", enclosed_volume(binary), 1., 1., 1e-15);
+    checker.close(
+      "cube: enclosed volume", enclosed_volume(binary), 1., 1., 1e-15);
     const SurfaceTriangles fine = split_to_size(binary, 0.2);
     check_volume_mesh(
       checker, "cube", fine, tetrahedralise(fine, 0.2, "test"), 1e-12);
@@ -462,7 +467,7 @@ namespace
              const std::string &base_name,
              const double       displacement)
   {
-    const double mu = 1., lambda = 1.;
+    const double       mu = 1., lambda = 1.;
     std::ostringstream value;
     value << std::setprecision(17) << displacement;
     return subsection("Problem", entry("Dimension", "3")) +
@@ -478,13 +483,11 @@ namespace
            dirichlet(1, 1, "x", "0") + dirichlet(2, 3, "y", "0") +
            dirichlet(3, 5, "z", "0") +
            dirichlet(4, 2, "x", value.str() + "*t") + tight_solver("cg") +
-           subsection("Output",
-                      entry("Directory", folder) +
-                        entry("Base name", base_name) +
-                        entry("Write VTU", "false") +
-                        entry("Verbose", "false") +
-                        entry("Write mesh",
-                              source == "surface" ? "true" : "false"));
+           subsection(
+             "Output",
+             entry("Directory", folder) + entry("Base name", base_name) +
+               entry("Write VTU", "false") + entry("Verbose", "false") +
+               entry("Write mesh", source == "surface" ? "true" : "false"));
   }
 
   std::string
@@ -502,10 +505,10 @@ namespace
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
     checker.section("the cube stretched to 1.5 on " + std::to_string(n_ranks) +
                     " rank(s)");
-    const double         l1    = 1.5;
-    const UniaxialState  exact = uniaxial("neo-Hookean", 3, l1, 1., 1.);
-    const std::string    base  = "cube_np" + std::to_string(n_ranks);
-    Parameters           parameters;
+    const double        l1    = 1.5;
+    const UniaxialState exact = uniaxial("neo-Hookean", 3, l1, 1., 1.);
+    const std::string   base  = "cube_np" + std::to_string(n_ranks);
+    Parameters          parameters;
     parameters.read_from_string(
       cube_scene("surface",
                  std::filesystem::absolute(folder + "/cube.stl").string(),
@@ -517,7 +520,8 @@ namespace
       Problem<3> problem(parameters, comm, false);
       problem.run();
       const StepSummary<3> &s = problem.summaries().back();
-      checker.close("axial stretch", s.deformed_max[0] - s.deformed_min[0], l1, l1, 1e-10);
+      checker.close(
+        "axial stretch", s.deformed_max[0] - s.deformed_min[0], l1, l1, 1e-10);
       for (unsigned int d = 1; d < 3; ++d)
         checker.close("lateral stretch",
                       s.deformed_max[d] - s.deformed_min[d],
@@ -526,7 +530,9 @@ namespace
                       1e-10);
       for (const auto &[id, force] : s.reactions)
         {
-          const double expected = id == 1 ? -exact.P11 : id == 2 ? exact.P11 : 0.;
+          const double expected = id == 1   ? -exact.P11
+                                  : id == 2 ? exact.P11
+                                            : 0.;
           checker.close("reaction x on boundary " + std::to_string(id),
                         force[0],
                         expected,
@@ -536,14 +542,14 @@ namespace
     }
     // The written mesh read back: the same run.
     Parameters again;
-    again.read_from_string(cube_scene("file",
-                                      std::filesystem::absolute(
-                                        folder + "/" + base + "_mesh.msh")
-                                        .string(),
-                                      base + "_file",
-                                      l1 - 1.),
-                           ".",
-                           base + "_file");
+    again.read_from_string(
+      cube_scene(
+        "file",
+        std::filesystem::absolute(folder + "/" + base + "_mesh.msh").string(),
+        base + "_file",
+        l1 - 1.),
+      ".",
+      base + "_file");
     {
       Problem<3> problem(again, comm, false);
       problem.run();
@@ -563,7 +569,7 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const unsigned int rank =
+  const unsigned int                       rank =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
   Checker   checker(rank == 0);
   const int status = run_and_report(

@@ -128,11 +128,10 @@ namespace hyperelastic
                       (used < token.size() && token[used] != '/'))
                     context.fail(where + ": '" + token +
                                  "' is not a vertex number");
-                  polygon.push_back(
-                    index > 0 ? index - 1
-                              : static_cast<long long>(
-                                  surface.vertices.size()) +
-                                  index);
+                  polygon.push_back(index > 0 ? index - 1
+                                              : static_cast<long long>(
+                                                  surface.vertices.size()) +
+                                                  index);
                 }
               add_polygon(polygon, group, surface, context, where + ", a face");
             }
@@ -141,8 +140,7 @@ namespace hyperelastic
               std::string name, word;
               while (words >> word)
                 name += (name.empty() ? "" : " ") + word;
-              group = groups.number(name.empty() ? "(unnamed)" : name,
-                                    surface);
+              group = groups.number(name.empty() ? "(unnamed)" : name, surface);
             }
         }
       return surface;
@@ -156,7 +154,7 @@ namespace hyperelastic
       index(const Point<3> &x, SurfaceTriangles &surface)
       {
         const std::array<double, 3> key{{x[0], x[1], x[2]}};
-        const auto found = numbers.find(key);
+        const auto                  found = numbers.find(key);
         if (found != numbers.end())
           return found->second;
         surface.vertices.push_back(x);
@@ -267,7 +265,8 @@ namespace hyperelastic
           , binary(binary)
           , context(context)
           , words(text.substr(start))
-      {}
+      {
+      }
 
       double
       next(const std::string &type)
@@ -395,7 +394,7 @@ namespace hyperelastic
 
       SurfaceTriangles surface;
       GroupNumbers     groups;
-      PlyValues values(text, body, format != "ascii", context);
+      PlyValues        values(text, body, format != "ascii", context);
       for (const PlyElement &element : elements)
         {
           // The face property that becomes the group: the first integer
@@ -423,9 +422,8 @@ namespace hyperelastic
                   const PlyProperty &property = element.properties[p];
                   if (property.list)
                     {
-                      const std::size_t n =
-                        static_cast<std::size_t>(
-                          values.next(property.count_type));
+                      const std::size_t n = static_cast<std::size_t>(
+                        values.next(property.count_type));
                       for (std::size_t k = 0; k < n; ++k)
                         polygon.push_back(
                           static_cast<long long>(values.next(property.type)));
@@ -451,12 +449,11 @@ namespace hyperelastic
               if (element.name == "vertex")
                 surface.vertices.push_back(x);
               else if (element.name == "face")
-                add_polygon(
-                  polygon,
-                  group,
-                  surface,
-                  context,
-                  "face " + std::to_string(i + 1) + " (from 1)");
+                add_polygon(polygon,
+                            group,
+                            surface,
+                            context,
+                            "face " + std::to_string(i + 1) + " (from 1)");
             }
         }
       return surface;
@@ -549,8 +546,9 @@ namespace hyperelastic
     for (unsigned int v = 0; v < surface.vertices.size(); ++v)
       {
         const Point<3> &x = surface.vertices[v];
-        joined[v] = first_at.emplace(std::array<double, 3>{{x[0], x[1], x[2]}}, v)
-                      .first->second;
+        joined[v] =
+          first_at.emplace(std::array<double, 3>{{x[0], x[1], x[2]}}, v)
+            .first->second;
       }
     std::vector<unsigned int> number(surface.vertices.size(),
                                      dealii::numbers::invalid_unsigned_int);

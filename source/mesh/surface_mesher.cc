@@ -10,12 +10,11 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/surface_mesher.h>
 
-#include <gmsh.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <gmsh.h>
 #include <iomanip>
 #include <iterator>
 #include <limits>
@@ -71,26 +70,26 @@ namespace hyperelastic
 
     /// 2D: do segments pq and ab (projected, coordinates i, j) meet?
     bool
-    segments_meet_2d(const Point<3> &p,
-                     const Point<3> &q,
-                     const Point<3> &a,
-                     const Point<3> &b,
+    segments_meet_2d(const Point<3>    &p,
+                     const Point<3>    &q,
+                     const Point<3>    &a,
+                     const Point<3>    &b,
                      const unsigned int i,
                      const unsigned int j,
                      const double       scale)
     {
-      const auto cross = [&](const Point<3> &o,
-                             const Point<3> &u,
-                             const Point<3> &w) {
-        return sign((u[i] - o[i]) * (w[j] - o[j]) -
-                      (u[j] - o[j]) * (w[i] - o[i]),
-                    scale);
-      };
+      const auto cross =
+        [&](const Point<3> &o, const Point<3> &u, const Point<3> &w) {
+          return sign((u[i] - o[i]) * (w[j] - o[j]) -
+                        (u[j] - o[j]) * (w[i] - o[i]),
+                      scale);
+        };
       const int d1 = cross(a, b, p), d2 = cross(a, b, q), d3 = cross(p, q, a),
                 d4 = cross(p, q, b);
       if (d1 * d2 < 0 && d3 * d4 < 0)
         return true;
-      const auto on = [&](const Point<3> &o, const Point<3> &u,
+      const auto on = [&](const Point<3> &o,
+                          const Point<3> &u,
                           const Point<3> &w) { // w on segment ou (collinear)
         return std::min(o[i], u[i]) <= w[i] && w[i] <= std::max(o[i], u[i]) &&
                std::min(o[j], u[j]) <= w[j] && w[j] <= std::max(o[j], u[j]);
@@ -128,7 +127,8 @@ namespace hyperelastic
               segments_meet_2d(p, q, c, a, i, j, s2))
             return true;
           const auto side = [&](const Point<3> &o, const Point<3> &u) {
-            return (u[i] - o[i]) * (p[j] - o[j]) - (u[j] - o[j]) * (p[i] - o[i]);
+            return (u[i] - o[i]) * (p[j] - o[j]) -
+                   (u[j] - o[j]) * (p[i] - o[i]);
           };
           const double s_ab = side(a, b), s_bc = side(b, c), s_ca = side(c, a);
           return (s_ab >= 0 && s_bc >= 0 && s_ca >= 0) ||
@@ -137,8 +137,7 @@ namespace hyperelastic
       const int s1 = sign(orient(p, q, a, b), scale),
                 s2 = sign(orient(p, q, b, c), scale),
                 s3 = sign(orient(p, q, c, a), scale);
-      return (s1 >= 0 && s2 >= 0 && s3 >= 0) ||
-             (s1 <= 0 && s2 <= 0 && s3 <= 0);
+      return (s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0);
     }
 
     /// Two triangles without a common vertex intersect iff an edge of one
@@ -169,7 +168,7 @@ namespace hyperelastic
     /// @p triangles of @p surface about @p x (1 inside, 0 outside): their
     /// solid angles (Van Oosterom and Strackee 1983) over 4 pi.
     double
-    winding_number(const SurfaceTriangles        &surface,
+    winding_number(const SurfaceTriangles          &surface,
                    const std::vector<unsigned int> &triangles,
                    const Point<3>                  &x)
     {
@@ -181,8 +180,8 @@ namespace hyperelastic
                              c = surface.vertices[surface.triangles[t][2]] - x;
           const double la = a.norm(), lb = b.norm(), lc = c.norm();
           angle += 2. * std::atan2(a * dealii::cross_product_3d(b, c),
-                                   la * lb * lc + (a * b) * lc +
-                                     (a * c) * lb + (b * c) * la);
+                                   la * lb * lc + (a * b) * lc + (a * c) * lb +
+                                     (b * c) * la);
         }
       return angle / (4. * std::acos(-1.));
     }
@@ -220,8 +219,7 @@ namespace hyperelastic
               edges[{std::min(a, b), std::max(a, b)}].size();
             if (users != 2)
               throw InputError(
-                where +
-                ": the surface is not closed: the edge from " +
+                where + ": the surface is not closed: the edge from " +
                 coordinates(surface.vertices[a]) + " to " +
                 coordinates(surface.vertices[b]) + " belongs to " +
                 std::to_string(users) + " triangle" + (users == 1 ? "" : "s") +
@@ -231,16 +229,16 @@ namespace hyperelastic
           }
       // Neighbours agree when they run along their common edge in
       // opposite directions; a breadth-first walk turns the others.
-      const auto direction = [&](const unsigned int t,
-                                 const unsigned int a,
-                                 const unsigned int b) {
-        for (unsigned int k = 0; k < 3; ++k)
-          if (surface.triangles[t][k] == a &&
-              surface.triangles[t][(k + 1) % 3] == b)
-            return 1;
-        return -1;
-      };
-      std::vector<unsigned int> component(n, dealii::numbers::invalid_unsigned_int);
+      const auto direction =
+        [&](const unsigned int t, const unsigned int a, const unsigned int b) {
+          for (unsigned int k = 0; k < 3; ++k)
+            if (surface.triangles[t][k] == a &&
+                surface.triangles[t][(k + 1) % 3] == b)
+              return 1;
+          return -1;
+        };
+      std::vector<unsigned int> component(
+        n, dealii::numbers::invalid_unsigned_int);
       std::vector<unsigned int> queue;
       n_components = 0;
       for (unsigned int seed = 0; seed < n; ++seed)
@@ -258,7 +256,7 @@ namespace hyperelastic
                                      b = surface.triangles[t][(k + 1) % 3];
                   const auto &users = edges[{std::min(a, b), std::max(a, b)}];
                   const unsigned int u = users[0] == t ? users[1] : users[0];
-                  const bool agree = direction(u, a, b) == -1;
+                  const bool         agree = direction(u, a, b) == -1;
                   if (component[u] == dealii::numbers::invalid_unsigned_int)
                     {
                       component[u] = n_components;
@@ -322,7 +320,6 @@ namespace hyperelastic
       return component;
     }
 
-
     /// The length scale of the surface (for the tolerances of the tests).
     double
     extent(const SurfaceTriangles &surface)
@@ -360,22 +357,21 @@ namespace hyperelastic
     // Degenerate triangles: a repeated vertex or no area.
     for (unsigned int t = 0; t < surface.triangles.size(); ++t)
       {
-        const Triangle &v = surface.triangles[t];
-        const double    area =
-          dealii::cross_product_3d(surface.vertices[v[1]] -
-                                     surface.vertices[v[0]],
-                                   surface.vertices[v[2]] -
-                                     surface.vertices[v[0]])
-            .norm();
+        const Triangle &v    = surface.triangles[t];
+        const double    area = dealii::cross_product_3d(surface.vertices[v[1]] -
+                                                       surface.vertices[v[0]],
+                                                     surface.vertices[v[2]] -
+                                                       surface.vertices[v[0]])
+                              .norm();
         if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0] ||
             !(area > 1e-14 * scale * scale))
           throw InputError(where +
                            ": the surface has a degenerate (zero area) " +
                            triangle_text(surface, t));
       }
-    unsigned int              n_components = 0;
-    std::size_t               n_turned     = 0;
-    std::vector<unsigned int> enclosing;
+    unsigned int                                   n_components = 0;
+    std::size_t                                    n_turned     = 0;
+    std::vector<unsigned int>                      enclosing;
     const std::vector<std::array<unsigned int, 3>> listed = surface.triangles;
     orient_components(surface, where, n_components, n_turned, enclosing);
 
@@ -408,20 +404,20 @@ namespace hyperelastic
         const Triangle &a = surface.triangles[t];
         for (const unsigned int u : candidates)
           {
-            const Triangle &b = surface.triangles[u];
+            const Triangle &b        = surface.triangles[u];
             bool            adjacent = false;
             for (const unsigned int v : a)
-              adjacent = adjacent || std::find(b.begin(), b.end(), v) != b.end();
+              adjacent =
+                adjacent || std::find(b.begin(), b.end(), v) != b.end();
             if (!adjacent &&
                 triangles_intersect(surface, t, u, scale * scale * scale))
               {
                 surface.triangles = listed; // named as the file lists them
-                throw InputError(where +
-                               ": the surface intersects itself: " +
-                               triangle_text(surface, t) + " and " +
-                               triangle_text(surface, u) +
-                               " intersect (numbered from 1 in the file's "
-                               "order, polygons split into triangles)");
+                throw InputError(where + ": the surface intersects itself: " +
+                                 triangle_text(surface, t) + " and " +
+                                 triangle_text(surface, u) +
+                                 " intersect (numbered from 1 in the file's "
+                                 "order, polygons split into triangles)");
               }
           }
       }
@@ -446,7 +442,8 @@ namespace hyperelastic
     double sum = 0.;
     for (const Triangle &v : surface.triangles)
       for (unsigned int k = 0; k < 3; ++k)
-        sum += surface.vertices[v[k]].distance(surface.vertices[v[(k + 1) % 3]]);
+        sum +=
+          surface.vertices[v[k]].distance(surface.vertices[v[(k + 1) % 3]]);
     return sum / (3. * surface.triangles.size());
   }
 
@@ -496,10 +493,10 @@ namespace hyperelastic
   {
     // The surface is oriented already; its components (separate bodies)
     // get one volume each, bounded by one discrete surface per group.
-    SurfaceTriangles          oriented     = surface;
-    unsigned int              n_components = 0;
-    std::size_t               n_turned     = 0;
-    std::vector<unsigned int> enclosing;
+    SurfaceTriangles                oriented     = surface;
+    unsigned int                    n_components = 0;
+    std::size_t                     n_turned     = 0;
+    std::vector<unsigned int>       enclosing;
     const std::vector<unsigned int> component =
       orient_components(oriented, where, n_components, n_turned, enclosing);
 
@@ -512,10 +509,10 @@ namespace hyperelastic
         // One discrete surface per (component, group), in the order of
         // first appearance.
         std::map<std::pair<unsigned int, unsigned int>, int> surface_of;
-        std::vector<std::vector<int>>                        loops(n_components);
-        std::map<int, std::vector<std::size_t>>              nodes_of;
-        std::map<int, std::vector<std::size_t>>              elements_of;
-        std::vector<int> node_surface(oriented.vertices.size(), 0);
+        std::vector<std::vector<int>>           loops(n_components);
+        std::map<int, std::vector<std::size_t>> nodes_of;
+        std::map<int, std::vector<std::size_t>> elements_of;
+        std::vector<int>            node_surface(oriented.vertices.size(), 0);
         std::map<int, unsigned int> group_of;
         for (unsigned int t = 0; t < oriented.triangles.size(); ++t)
           {
@@ -587,7 +584,7 @@ namespace hyperelastic
         std::map<std::array<double, 3>, unsigned int> surface_vertex;
         for (unsigned int v = 0; v < oriented.vertices.size(); ++v)
           {
-            const Point<3> &x = oriented.vertices[v];
+            const Point<3> &x                    = oriented.vertices[v];
             surface_vertex[{{x[0], x[1], x[2]}}] = v;
           }
         mesh.vertices = oriented.vertices;
@@ -668,8 +665,8 @@ namespace hyperelastic
   TetQuality
   tet_quality(const GmshMesh<3> &mesh)
   {
-    TetQuality  quality;
-    const double pi = std::acos(-1.);
+    TetQuality   quality;
+    const double pi              = std::acos(-1.);
     quality.min_dihedral_degrees = 180.;
     quality.min_radius_ratio     = 1.;
     for (const dealii::CellData<3> &cell : mesh.cells)
@@ -688,7 +685,7 @@ namespace hyperelastic
           {
             const Point<3> &p = x[(k + 1) % 4], &q = x[(k + 2) % 4],
                            &r = x[(k + 3) % 4];
-            Tensor<1, 3> n = 0.5 * dealii::cross_product_3d(q - p, r - p);
+            Tensor<1, 3> n    = 0.5 * dealii::cross_product_3d(q - p, r - p);
             if (n * (p - x[k]) < 0.)
               n = -n;
             normal[k] = n;
@@ -712,7 +709,7 @@ namespace hyperelastic
            b.norm_square() * dealii::cross_product_3d(c, a) +
            c.norm_square() * dealii::cross_product_3d(a, b)) /
           (2. * det);
-        const double ratio = 3. * r_in / centre.norm();
+        const double ratio       = 3. * r_in / centre.norm();
         quality.min_radius_ratio = std::min(quality.min_radius_ratio, ratio);
         quality.mean_radius_ratio += ratio;
       }
@@ -741,7 +738,7 @@ namespace hyperelastic
     };
     const std::vector<unsigned int> surfaces = distinct(boundary_ids),
                                     volumes  = distinct(material_ids);
-    const auto box = [&](std::ostream &o) {
+    const auto box                           = [&](std::ostream &o) {
       o << mesh.lower[0] << ' ' << mesh.lower[1] << ' ' << mesh.lower[2] << ' '
         << mesh.upper[0] << ' ' << mesh.upper[1] << ' ' << mesh.upper[2];
     };
@@ -775,7 +772,7 @@ namespace hyperelastic
     // Elements in their order, in blocks of consecutive equal ids.
     std::ostringstream blocks;
     std::size_t        n_blocks = 0, number = 0;
-    const auto         write_blocks = [&](const auto              &elements,
+    const auto         write_blocks = [&](const auto                      &elements,
                                   const std::vector<unsigned int> &ids,
                                   const std::vector<unsigned int> &entities,
                                   const int                        dim,
@@ -830,8 +827,8 @@ namespace hyperelastic
         const std::string where =
           "scene entry '" + entry + "' = '" + parameters.file + "'";
         const std::size_t n_turned = check_closed_surface(surface, where);
-        const double mean = mean_edge_length(surface);
-        const double size =
+        const double      mean     = mean_edge_length(surface);
+        const double      size =
           parameters.mesh_size > 0. ? parameters.mesh_size : mean;
         if (parameters.mesh_size > 0.)
           surface = split_to_size(surface, parameters.mesh_size);
