@@ -86,6 +86,16 @@ namespace hyperelastic
       }
     check_arc_length(load_stepping, time_integration, contact, problem);
     output.check_checkpoints(load_stepping, time_integration);
+    if (output.write_mesh)
+      {
+        if (mesh.source != MeshSource::surface)
+          reject("Output/Write mesh",
+                 "true",
+                 "writes the mesh generated from a closed surface: it needs "
+                 "'Mesh/Source = surface'");
+        mesh.generated_mesh_file =
+          output.directory + "/" + output.base_name + "_mesh.msh";
+      }
     check_viscoelasticity(material, load_stepping, time_integration);
     check_inverted_elements(newton, material);
     loading.check_dirichlet_conflicts();

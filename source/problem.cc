@@ -140,6 +140,7 @@ namespace hyperelastic
                     {"wait", mesh_stats.wait_time},
                     {"describe", mesh_stats.describe_time},
                     {"distribute", mesh_stats.distribute_time}};
+    generated_mesh = mesh_stats.generated_mesh;
     return mesh_ids;
   }
 

@@ -25,6 +25,7 @@ namespace hyperelastic
           << " (mu = " << material->small_strain_moduli().mu
           << ", lambda = " << material->small_strain_moduli().lambda << ")\n"
           << "linear solver: " << linear_solver.description() << std::endl;
+    pcout << generated_mesh;
     print_regions();
     for (const BoundaryRegions::Region &region : boundary_regions.regions)
       {

@@ -238,6 +238,8 @@ namespace hyperelastic
     /// (built in about half the time, the same cells in the same order).
     std::unique_ptr<dealii::Triangulation<dim>> triangulation;
     std::vector<std::pair<std::string, double>> setup_stages;
+    /// The run header's lines about a mesh generated from a surface.
+    std::string                                 generated_mesh;
     bool                                        is_set_up = false;
     const dealii::FESystem<dim>                 fe;
     const dealii::MappingFE<dim>                mapping;

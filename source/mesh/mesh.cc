@@ -143,10 +143,10 @@ namespace hyperelastic
             }
           else
             {
-              mesh = read_and_check_gmsh<dim>(parameters.file, stats);
+              mesh = read_and_check_gmsh<dim>(parameters.file, stats, &parameters);
               outcome.reoriented_cells = mesh.n_reoriented;
             }
-          if (!from_cells && parameters.source == MeshSource::file)
+          if (!from_cells && parameters.source != MeshSource::box)
             {
               Timer timer;
               triangulate_checked_mesh(parameters.file, mesh, serial);
@@ -250,7 +250,7 @@ namespace hyperelastic
     CheckedMesh<dim>          mesh;
     std::vector<unsigned int> owner; // of each cell of mesh
     Triangulation<dim>        serial;
-    const bool from_cells = parameters.source == MeshSource::file &&
+    const bool from_cells = parameters.source != MeshSource::box &&
                             parameters.global_refinements == 0;
     ReaderOutcome      outcome;
     std::exception_ptr reader_exception;
@@ -330,7 +330,8 @@ namespace hyperelastic
       }
     else
       {
-        CheckedMesh<dim> mesh = read_and_check_gmsh<dim>(parameters.file, stats);
+        CheckedMesh<dim> mesh =
+          read_and_check_gmsh<dim>(parameters.file, stats, &parameters);
         stats.reoriented_cells = mesh.n_reoriented;
         Timer timer;
         // Nodes no cell uses (gmsh files may list them) are dropped, as the

@@ -8,6 +8,7 @@
 #include <hyperelastic/mesh/cell_ordering.h>
 #include <hyperelastic/mesh/gmsh_reader.h>
 #include <hyperelastic/mesh/mesh_checks.h>
+#include <hyperelastic/mesh/surface_mesher.h>
 
 #include <algorithm>
 #include <array>
@@ -423,10 +424,15 @@ namespace hyperelastic
 
   template <int dim>
   CheckedMesh<dim>
-  read_and_check_gmsh(const std::string &file_name, MeshStatistics &statistics)
+  read_and_check_gmsh(const std::string    &file_name,
+                      MeshStatistics       &statistics,
+                      const MeshParameters *parameters)
   {
     Timer         timer;
-    GmshMesh<dim> file   = read_gmsh<dim>(file_name);
+    GmshMesh<dim> file =
+      parameters && parameters->source == MeshSource::surface
+        ? mesh_closed_surface<dim>(*parameters, statistics.generated_mesh)
+        : read_gmsh<dim>(file_name);
     statistics.read_time = timer.wall_time();
     timer.restart();
 
@@ -523,7 +529,11 @@ namespace hyperelastic
                    const int,
                    const Numbering &);
   template CheckedMesh<2>
-  read_and_check_gmsh<2>(const std::string &, MeshStatistics &);
+  read_and_check_gmsh<2>(const std::string &,
+                         MeshStatistics &,
+                         const MeshParameters *);
   template CheckedMesh<3>
-  read_and_check_gmsh<3>(const std::string &, MeshStatistics &);
+  read_and_check_gmsh<3>(const std::string &,
+                         MeshStatistics &,
+                         const MeshParameters *);
 } // namespace hyperelastic

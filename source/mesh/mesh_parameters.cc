@@ -19,16 +19,36 @@ namespace hyperelastic
     prm.declare_entry(
       "Source",
       "box",
-      Selection("box|file"),
+      Selection("box|file|surface"),
       "'box': a generated box of simplices (rectangle in 2D) with boundary ids "
       "0/1 on the faces x = min/max, 2/3 on y = min/max, 4/5 on z = min/max. "
       "'file': a gmsh .msh file (format 1, 2.2, 4.0 or 4.1, ASCII) whose physical tags on "
-      "boundary faces become boundary ids.");
+      "boundary faces become boundary ids. "
+      "'surface': a closed triangulated surface (OBJ, STL ASCII or binary, "
+      "PLY ASCII or binary little-endian, OFF; 3D only) filled with "
+      "tetrahedra on the fly by gmsh's Delaunay mesher, keeping the "
+      "surface's triangles as the boundary faces (split to 'Mesh size'). "
+      "Boundary faces get boundary id 0, or, if the surface has groups "
+      "(OBJ 'g'/'o' lines, a PLY face property), the ids 1, 2, ... in the "
+      "order the groups first appear; cells get material id 0. A surface "
+      "that is not closed or that intersects itself is an input error; "
+      "triangles oriented against their neighbours are turned.");
     prm.declare_entry("File",
                       "",
                       Anything(),
-                      "Mesh file for Source = file; a relative path is read "
+                      "Mesh file for Source = file, surface file for "
+                      "Source = surface; a relative path is read "
                       "relative to the folder of the scene file.");
+    prm.declare_entry(
+      "Mesh size",
+      "0",
+      Double(0.),
+      "Source = surface: the target edge length of the tetrahedra. The "
+      "surface's triangles are split into four (at their edge midpoints, "
+      "so the shape and its vertices stay) until their mean edge is at most "
+      "1.5 times this size, and the inside is filled at the sizes of the "
+      "surface. 0: the surface's triangles as they are (the inside at "
+      "their mean edge length).");
     prm.declare_entry("Lower corner",
                       "0, 0, 0",
                       List(Double(), 2, 3),
@@ -56,12 +76,20 @@ namespace hyperelastic
   MeshParameters::parse(ParameterHandler &prm, const std::string &scene_folder)
   {
     prm.enter_subsection("Mesh");
-    source = prm.get("Source") == "box" ? MeshSource::box : MeshSource::file;
+    const std::string source_name = prm.get("Source");
+    source = source_name == "box"    ? MeshSource::box
+             : source_name == "file" ? MeshSource::file
+                                     : MeshSource::surface;
     file   = dealii::Utilities::trim(prm.get("File"));
-    if (source == MeshSource::file)
+    mesh_size = prm.get_double("Mesh size");
+    if (!std::isfinite(mesh_size))
+      reject("Mesh/Mesh size", prm.get("Mesh size"), "must be a finite length");
+    if (source != MeshSource::box)
       {
         if (file.empty())
-          reject("Mesh/File", file, "a mesh file is needed when Source = file");
+          reject("Mesh/File",
+                 file,
+                 "a mesh file is needed when Source = " + source_name);
         if (file[0] != '/')
           file = scene_folder + "/" + file;
       }
@@ -81,6 +109,11 @@ namespace hyperelastic
   void
   MeshParameters::check_dimension(const unsigned int dim) const
   {
+    if (source == MeshSource::surface && dim != 3)
+      reject("Mesh/Source",
+             "surface",
+             "a closed surface is filled with tetrahedra: it needs "
+             "'Problem/Dimension = 3'");
     if (source != MeshSource::box)
       return;
     const auto size = [](const auto &v) { return std::to_string(v.size()); };

@@ -72,6 +72,14 @@ namespace hyperelastic
       "file per step instead of one per rank). Every cell has its own "
       "vertices, so cell fields stay exact; P2 is written at its vertices "
       "(linear cells). Independent of 'Write VTU'.");
+    prm.declare_entry(
+      "Write mesh",
+      "false",
+      Bool(),
+      "With 'Mesh/Source = surface': write the generated volume mesh as "
+      "<base>_mesh.msh (gmsh ASCII 4.1; the boundary ids as the physical "
+      "tags of the boundary triangles), which 'Mesh/Source = file' reads "
+      "back to the same run.");
     prm.declare_entry("Verbose",
                       "true",
                       Bool(),
@@ -98,6 +106,7 @@ namespace hyperelastic
     base_name = dealii::Utilities::trim(prm.get("Base name"));
     write_vtu = prm.get_bool("Write VTU");
     write_hdf5 = prm.get_bool("Write HDF5");
+    write_mesh = prm.get_bool("Write mesh");
     verbose   = prm.get_bool("Verbose");
     checkpoint_every = prm.get_integer("Checkpoint every");
     const std::string surface = prm.get("Surface format");

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <set>
+#include <string>
 
 namespace hyperelastic
 {
@@ -42,6 +43,9 @@ namespace hyperelastic
     double read_time = 0., order_time = 0., check_time = 0., build_time = 0.,
            partition_time = 0., wait_time = 0., describe_time = 0.,
            distribute_time = 0.;
+    /// The lines of the run header about a volume mesh generated from a
+    /// closed surface (Mesh/Source = surface), on the reader; else empty.
+    std::string generated_mesh;
   };
 
   /// Builds @p tria from the scene's mesh section and returns the boundary ids

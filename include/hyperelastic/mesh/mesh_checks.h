@@ -115,8 +115,12 @@ namespace hyperelastic
 
   /// The mesh of a gmsh file, checked, with every cell positively
   /// oriented, and its faces. Sets the read, build and check times of
-  /// @p statistics.
+  /// @p statistics. With @p parameters of Mesh/Source = surface, the
+  /// mesh is generated from the closed surface of @p file_name instead
+  /// (surface_mesher.h) and checked the same way.
   template <int dim>
   CheckedMesh<dim>
-  read_and_check_gmsh(const std::string &file_name, MeshStatistics &statistics);
+  read_and_check_gmsh(const std::string    &file_name,
+                      MeshStatistics       &statistics,
+                      const MeshParameters *parameters = nullptr);
 } // namespace hyperelastic

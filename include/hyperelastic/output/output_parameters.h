@@ -31,6 +31,9 @@ namespace hyperelastic
     bool        write_vtu = true;
     /// 'Write HDF5': <base>.xdmf with <base>_mesh.h5 and <base>_NNNN.h5.
     bool write_hdf5 = false;
+    /// 'Write mesh': the volume mesh generated from a closed surface as
+    /// <base>_mesh.msh (gmsh ASCII 4.1).
+    bool write_mesh = false;
     bool        verbose   = true;
     SurfaceFormat surface_format = SurfaceFormat::none;
     /// 'Checkpoint every': steps between checkpoints (0: none).
