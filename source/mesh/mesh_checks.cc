@@ -6,8 +6,8 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/cell_ordering.h>
-#include <hyperelastic/mesh/gmsh_reader.h>
 #include <hyperelastic/mesh/mesh_checks.h>
+#include <hyperelastic/mesh/mesh_file.h>
 
 #include <algorithm>
 #include <array>
@@ -426,7 +426,7 @@ namespace hyperelastic
   read_and_check_gmsh(const std::string &file_name, MeshStatistics &statistics)
   {
     Timer         timer;
-    GmshMesh<dim> file   = read_gmsh<dim>(file_name);
+    GmshMesh<dim> file   = read_mesh_file<dim>(file_name);
     statistics.read_time = timer.wall_time();
     timer.restart();
 
