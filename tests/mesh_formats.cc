@@ -17,6 +17,8 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/gmsh_reader.h>
+#include <hyperelastic/mesh/mesh.h>
+#include <hyperelastic/mesh/mesh_checks.h>
 #include <hyperelastic/mesh/mesh_file.h>
 #include <hyperelastic/problem.h>
 
@@ -672,6 +674,43 @@ namespace
                                 "bad_vertex.mesh'",
                               "refers to vertex 100000",
                               "(line "});
+          }
+          {
+            // A cell listed twice: the checks name the cells by the file's
+            // own numbering.
+            GmshMesh<dim> twice = reference;
+            twice.cells.push_back(twice.cells[0]);
+            write_text(d + "twice.vtk", vtk(twice, false, false));
+            write_text(d + "twice.mesh", medit(twice));
+            // The cell and its twin (last of the cells) among those named.
+            const std::string n  = std::to_string(reference.cells.size());
+            const std::string n1 = std::to_string(reference.cells.size() + 1);
+            for (const auto &[file, first, last] :
+                 {std::tuple{d + "twice.vtk",
+                             "VTK cells 0, ",
+                             ", " + n + " (the file's cell ids, from 0)"},
+                  std::tuple{d + "twice.mesh",
+                             "MEDIT elements 1, ",
+                             ", " + n1 + " (the positions in the file's"}})
+              {
+                std::string message;
+                try
+                  {
+                    MeshStatistics statistics;
+                    read_and_check_gmsh<dim>(file, statistics);
+                  }
+                catch (const InputError &e)
+                  {
+                    message = e.what();
+                  }
+                checker.is_true(
+                  "a cell listed twice in " +
+                    std::filesystem::path(file).filename().string() +
+                    ": the message names '" + first + "... " + last + "'",
+                  message.find(first) != std::string::npos &&
+                    message.find(last) != std::string::npos);
+                checker.note("message: " + message);
+              }
           }
         }
       catch (const std::exception &e)
