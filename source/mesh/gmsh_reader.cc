@@ -486,6 +486,20 @@ namespace hyperelastic
         return static_cast<long long>(value);
       }
 
+      /// The size_t of format 4.1 at @p bytes (an element's number or
+      /// node tag); -1 (no such node) beyond the range of long long.
+      long long
+      size_at(const char *bytes) const
+      {
+        const std::uint64_t value = data_size == 8
+                                      ? load_binary<std::uint64_t>(bytes, swap)
+                                      : load_binary<std::uint32_t>(bytes, swap);
+        return value > static_cast<std::uint64_t>(
+                         std::numeric_limits<long long>::max())
+                 ? -1
+                 : static_cast<long long>(value);
+      }
+
       /// @p n size_t of format 4.1 into @p values.
       void
       binary_sizes(std::vector<long long> &values,
@@ -628,8 +642,7 @@ namespace hyperelastic
               checked_count(in.number<long long>(), 8, section);
             in.skip_line();
             reserve_elements(n_elements);
-            std::vector<std::int32_t> data;
-            std::array<long long, 4>  element_nodes;
+            std::array<long long, 4> element_nodes;
             for (long long read = 0; read < n_elements;)
               {
                 std::array<std::int32_t, 3> header;
@@ -645,20 +658,23 @@ namespace hyperelastic
                           " tags) that does not fit the element count " +
                           std::to_string(n_elements) + " in " +
                           std::string(section));
-                const long long per_element = 1 + n_tags + n_node;
-                data.resize(checked_count(n, 4 * per_element, section) *
-                            per_element);
-                in.binary(data.data(), data.size(), swap, section);
+                const long long   per_element = 1 + n_tags + n_node;
+                const std::size_t bytes       = 4 * per_element;
+                const char       *e =
+                  in.raw(checked_count(n, bytes, section) * bytes, section);
                 const bool keep = is_read(type);
-                for (long long i = 0; i < n; ++i)
+                for (long long i = 0; i < n; ++i, e += bytes)
                   {
-                    const std::int32_t *e = data.data() + i * per_element;
                     if (keep)
                       for (int k = 0; k < n_node; ++k)
-                        element_nodes[k] = e[1 + n_tags + k];
-                    add_element(e[0],
+                        element_nodes[k] =
+                          load_binary<std::int32_t>(e + 4 * (1 + n_tags + k),
+                                                    swap);
+                    add_element(load_binary<std::int32_t>(e, swap),
                                 type,
-                                n_tags > 0 ? e[1] : 0,
+                                n_tags > 0
+                                  ? load_binary<std::int32_t>(e + 4, swap)
+                                  : 0,
                                 element_nodes.data());
                   }
                 read += n;
@@ -674,7 +690,6 @@ namespace hyperelastic
             binary_size(section); // smallest and largest tag
             binary_size(section);
             reserve_elements(n_elements);
-            std::vector<long long>   data;
             std::array<long long, 4> element_nodes;
             for (long long b = 0; b < n_blocks; ++b)
               {
@@ -687,14 +702,19 @@ namespace hyperelastic
                 const long long n = checked_count(binary_size(section),
                                                   data_size * per_element,
                                                   section);
-                binary_sizes(data, n * per_element, section);
-                const bool keep = is_read(type);
-                for (long long i = 0; i < n; ++i)
+                // Straight from the file's bytes, element by element.
+                const std::size_t bytes = data_size * per_element;
+                const char       *e     = in.raw(n * bytes, section);
+                const bool        keep  = is_read(type);
+                for (long long i = 0; i < n; ++i, e += bytes)
                   {
-                    const long long *e = data.data() + i * per_element;
                     if (keep)
-                      std::copy(e + 1, e + 1 + n_node, element_nodes.data());
-                    add_element(e[0], type, physical, element_nodes.data());
+                      for (int k = 0; k < n_node; ++k)
+                        element_nodes[k] = size_at(e + (1 + k) * data_size);
+                    add_element(size_at(e),
+                                type,
+                                physical,
+                                element_nodes.data());
                   }
               }
           }

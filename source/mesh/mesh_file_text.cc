@@ -13,7 +13,7 @@ namespace hyperelastic
 {
   using namespace dealii;
 
-  std::string
+  FileBytes
   read_whole_file(const std::string &file_name, const std::string &entry)
   {
     std::ifstream   in(file_name, std::ios::binary);
@@ -24,10 +24,14 @@ namespace hyperelastic
     in.seekg(0, std::ios::end);
     const std::streamoff size = in.tellg();
     in.seekg(0);
-    std::string text(size > 0 ? size : 0, '\0');
-    if (size < 0 || !in.read(text.data(), size))
+    if (size < 0)
       throw InputError("cannot read mesh file '" + file_name + "'");
-    return text;
+    FileBytes file;
+    file.size = size;
+    file.data.reset(new char[file.size > 0 ? file.size : 1]);
+    if (!in.read(file.data.get(), size))
+      throw InputError("cannot read mesh file '" + file_name + "'");
+    return file;
   }
 
   bool
@@ -39,8 +43,9 @@ namespace hyperelastic
     return first == 1;
   }
 
-  MeshFileText::MeshFileText(std::string text, std::string file_name)
-      : text(std::move(text))
+  MeshFileText::MeshFileText(FileBytes contents, std::string file_name)
+      : contents(std::move(contents))
+      , text(this->contents.data.get(), this->contents.size)
       , file_name(std::move(file_name))
   {
   }
@@ -60,7 +65,7 @@ namespace hyperelastic
     const std::size_t start = pos;
     while (pos < text.size() && !is_blank(text[pos]))
       ++pos;
-    return std::string_view(text).substr(start, pos - start);
+    return text.substr(start, pos - start);
   }
 
   void
@@ -79,7 +84,7 @@ namespace hyperelastic
         skip_line();
         if (!more())
           fail("unexpected end of file in section " + std::string(section));
-        if (std::string_view(text).substr(pos, prefix.size()) == prefix)
+        if (text.substr(pos, prefix.size()) == prefix)
           return word();
       }
   }
@@ -109,7 +114,7 @@ namespace hyperelastic
     std::size_t at = pos;
     while (at < text.size() && (text[at] == ' ' || text[at] == '\t'))
       ++at;
-    return std::string_view(text).substr(at, prefix.size()) == prefix;
+    return text.substr(at, prefix.size()) == prefix;
   }
 
   void
@@ -138,6 +143,16 @@ namespace hyperelastic
       fail("expected " + std::string(expected) + " on line " +
            std::to_string(line_number()) + " but found '" +
            std::string(w.substr(0, 40)) + "' (do the counts match the lists?)");
+  }
+
+  const char *
+  MeshFileText::raw(const std::size_t n, const std::string_view section)
+  {
+    if (n > text.size() - pos)
+      fail_truncated(section, n);
+    const char *bytes = text.data() + pos;
+    pos += n;
+    return bytes;
   }
 
   void
@@ -190,8 +205,14 @@ namespace hyperelastic
         mesh.lower[d] = std::numeric_limits<double>::infinity();
         mesh.upper[d] = -std::numeric_limits<double>::infinity();
       }
+    // The nodes the cells use, then their bounds: one pass over the nodes
+    // rather than dim + 1 scattered reads per cell.
+    std::vector<char> used(nodes.size(), 0);
     for (const CellData<dim> &cell : mesh.cells)
       for (const unsigned int v : cell.vertices)
+        used[v] = 1;
+    for (std::size_t v = 0; v < nodes.size(); ++v)
+      if (used[v])
         for (unsigned int d = 0; d < 3; ++d)
           {
             mesh.lower[d] = std::min(mesh.lower[d], nodes[v][d]);

@@ -13,6 +13,7 @@
 #include <charconv>
 #include <cstddef>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -20,10 +21,37 @@
 
 namespace hyperelastic
 {
+  /// The bytes of a file (not zeroed before they are read: a large mesh
+  /// file is read once).
+  struct FileBytes
+  {
+    std::unique_ptr<char[]> data;
+    std::size_t             size = 0;
+  };
+
   /// The whole file @p file_name, or an InputError naming it and the scene
   /// entry @p entry.
-  std::string
+  FileBytes
   read_whole_file(const std::string &file_name, const std::string &entry);
+
+  /// The number of type T stored at @p bytes, its bytes reversed if
+  /// @p swap.
+  template <typename T>
+  T
+  load_binary(const char *bytes, const bool swap)
+  {
+    static_assert(std::is_arithmetic_v<T>);
+    T value;
+    if (swap)
+      {
+        char reversed[sizeof(T)];
+        std::reverse_copy(bytes, bytes + sizeof(T), reversed);
+        std::memcpy(&value, reversed, sizeof(T));
+      }
+    else
+      std::memcpy(&value, bytes, sizeof(T));
+    return value;
+  }
 
   /// Whether this machine stores numbers little-endian.
   bool
@@ -34,7 +62,7 @@ namespace hyperelastic
   class MeshFileText
   {
   public:
-    MeshFileText(std::string text, std::string file_name);
+    MeshFileText(FileBytes contents, std::string file_name);
 
     /// Whether another token follows (blanks skipped).
     bool
@@ -135,6 +163,11 @@ namespace hyperelastic
       return value;
     }
 
+    /// The next @p n bytes (moved past); InputError naming @p section if
+    /// the file ends before.
+    const char *
+    raw(const std::size_t n, const std::string_view section);
+
     /// Moves past @p n bytes; InputError naming @p section if the file
     /// ends before.
     void
@@ -176,9 +209,10 @@ namespace hyperelastic
     void
     skip_blanks();
 
-    const std::string text;
-    const std::string file_name;
-    std::size_t       pos = 0;
+    const FileBytes        contents;
+    const std::string_view text; ///< of contents
+    const std::string      file_name;
+    std::size_t            pos = 0;
   };
 
   /// The last step of every reader: the bounds of the cells' nodes and the
