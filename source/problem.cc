@@ -11,6 +11,7 @@
 #include <hyperelastic/contact/contact_layer.h>
 #include <hyperelastic/formulation/formulation_registry.h>
 #include <hyperelastic/mesh/bodies.h>
+#include <hyperelastic/mesh/boundary_regions.h>
 #include <hyperelastic/mesh/mesh.h>
 #include <hyperelastic/problem.h>
 #include <hyperelastic/solvers/rigid_body_modes.h>
@@ -63,7 +64,7 @@ namespace hyperelastic
       return;
     is_set_up = true;
     TimerOutput::Scope                 scope(timer, "mesh and setup");
-    const std::set<types::boundary_id> mesh_ids = setup_mesh();
+    std::set<types::boundary_id> mesh_ids = setup_mesh();
     // The stages after the mesh, each from the end of the one before.
     Timer      stage_timer;
     const auto end_stage = [&](const std::string &name) {
@@ -81,8 +82,10 @@ namespace hyperelastic
       }
     materials =
       std::make_unique<MaterialRegions<dim>>(models, cell_regions.of_cell);
+    LoadingParameters loading = parameters.loading;
+    boundary_regions = assign_boundary_regions(*triangulation, loading, mesh_ids);
     boundary_conditions =
-      std::make_unique<BoundaryConditions<dim>>(parameters.loading, mesh_ids);
+      std::make_unique<BoundaryConditions<dim>>(loading, mesh_ids);
     if (load_editor)
       load_editor(*boundary_conditions);
     dof_handler.distribute_dofs(fe);
@@ -91,9 +94,13 @@ namespace hyperelastic
     setup_system(pressure_dofs);
     end_stage("system");
     if (parameters.linear_solver.type == LinearSolverType::cg_amg)
-      linear_solver.set_near_null_space(rigid_body_modes(mapping, dof_handler),
-                                        n_rigid_body_modes<dim>,
-                                        dim);
+      {
+        linear_solver.set_near_null_space(rigid_body_modes(mapping,
+                                                           dof_handler),
+                                          n_rigid_body_modes<dim>,
+                                          dim);
+        linear_solver.set_stiffness_contrast(stiffness_contrast());
+      }
     end_stage("null space");
     elasticity = std::make_unique<ElasticityOperator<dim>>(
       dof_handler,
@@ -205,6 +212,26 @@ namespace hyperelastic
     linear_solver.set_symmetric(elasticity->is_conservative());
     formulation->configure_linear_solver(
       linear_solver, dof_handler, mapping, *materials, pressure_dofs);
+  }
+
+  template <int dim>
+  double
+  Problem<dim>::stiffness_contrast() const
+  {
+    // The small-strain stiffness lambda + 2 mu of each region with cells
+    // (an incompressible region's is infinite: its own stiffness then
+    // comes from the mixed formulation's pressure, and mu decides).
+    double smallest = std::numeric_limits<double>::infinity(), largest = 0.;
+    for (unsigned int r = 0; r < materials->n_regions(); ++r)
+      if (cell_regions.n_cells.empty() || cell_regions.n_cells[r] > 0)
+        {
+          const LameParameters m = materials->model(r).small_strain_moduli();
+          const double         stiffness =
+            std::isfinite(m.lambda) ? m.lambda + 2. * m.mu : 2. * m.mu;
+          smallest = std::min(smallest, stiffness);
+          largest  = std::max(largest, stiffness);
+        }
+    return smallest > 0. ? largest / smallest : 1.;
   }
 
   template <int dim>

@@ -26,6 +26,15 @@ namespace hyperelastic
           << ", lambda = " << material->small_strain_moduli().lambda << ")\n"
           << "linear solver: " << linear_solver.description() << std::endl;
     print_regions();
+    for (const BoundaryRegions::Region &region : boundary_regions.regions)
+      {
+        pcout << "boundary region '" << region.condition << "' (";
+        for (const std::string &section : region.sections)
+          pcout << (&section == &region.sections.front() ? "" : ", ")
+                << section;
+        pcout << "): boundary id " << region.id << ", " << region.n_faces
+              << " faces" << std::endl;
+      }
     if (!elasticity->energy_terms().empty())
       {
         pcout << "loads:";

@@ -21,6 +21,7 @@
 #include <hyperelastic/formulation/formulation.h>
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/materials/material.h>
+#include <hyperelastic/mesh/boundary_regions.h>
 #include <hyperelastic/mesh/cell_regions.h>
 #include <hyperelastic/output/output.h>
 #include <hyperelastic/output/step_postprocessor.h>
@@ -176,6 +177,11 @@ namespace hyperelastic
     /// regions). Collective.
     LameParameters
     contact_moduli() const;
+    /// The largest over the smallest small-strain stiffness lambda + 2 mu of
+    /// the materials with cells (1 for one material): the linear solver's
+    /// 'AMG for contrast = auto'.
+    double
+    stiffness_contrast() const;
     /// The density of each region (region 0 first); empty without regions.
     std::vector<double>
     region_densities() const;
@@ -243,6 +249,8 @@ namespace hyperelastic
     /// of each cell, and both as the material of every cell.
     std::vector<std::unique_ptr<Material<dim>>> region_models;
     CellRegions                                 cell_regions;
+    /// The faces selected by 'Boundary region' conditions and their ids.
+    BoundaryRegions boundary_regions;
     std::unique_ptr<MaterialRegions<dim>>       materials;
     /// The same models in 3D, for the plane-strain stress in the output
     /// (null without VTU output), region 0 first.

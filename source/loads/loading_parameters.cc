@@ -59,6 +59,35 @@ namespace hyperelastic
           constants[name] = value;
         }
     }
+
+    const char *const boundary_region_documentation =
+      "The faces of this section selected by position instead of a "
+      "'Boundary id' (for meshes that carry none): a condition on the "
+      "reference centre of each boundary face, an expression of x, y(, z) and "
+      "the Loading/Constants, e.g. 'y < 0.035' or 'abs(x - 1) < 1e-6 && y > "
+      "0'. The faces it selects get a boundary id of their own at set-up (the "
+      "run header lists them); a condition that selects no face, a face "
+      "selected by two different conditions, or a condition that takes faces "
+      "of a 'Boundary id' another section names is an input error. A "
+      "section uses either 'Boundary id' or 'Boundary region'. Empty: the "
+      "section names a 'Boundary id'.";
+
+    /// The trimmed 'Boundary region' of the current subsection @p section,
+    /// rejected if the section also sets 'Boundary id' (@p id >= 0).
+    std::string
+    boundary_region(ParameterHandler  &prm,
+                    const std::string &section,
+                    const int          id)
+    {
+      const std::string region =
+        dealii::Utilities::trim(prm.get("Boundary region"));
+      if (!region.empty() && id >= 0)
+        reject(section + "/Boundary region",
+               region,
+               "the section also sets 'Boundary id' = " + std::to_string(id) +
+                 ": use one of the two");
+      return region;
+    }
   } // namespace
 
   void
@@ -92,7 +121,12 @@ namespace hyperelastic
                           "-1",
                           Integer(-1),
                           "Boundary id on which the displacement is "
-                          "prescribed; -1 leaves this slot unused.");
+                          "prescribed; -1 leaves this slot unused (unless "
+                          "'Boundary region' is set).");
+        prm.declare_entry("Boundary region",
+                          "",
+                          Anything(),
+                          boundary_region_documentation);
         prm.declare_entry("Components",
                           "x, y, z",
                           MultipleSelection("x|y|z"),
@@ -142,6 +176,10 @@ namespace hyperelastic
                             "-1",
                             Integer(-1),
                             kind.id_documentation);
+          prm.declare_entry("Boundary region",
+                            "",
+                            Anything(),
+                            boundary_region_documentation);
           prm.declare_entry(kind.name,
                             kind.default_value,
                             Anything(),
@@ -165,12 +203,14 @@ namespace hyperelastic
       {
         const std::string section = "Dirichlet " + std::to_string(i);
         prm.enter_subsection(section);
-        const int id = prm.get_integer("Boundary id");
-        if (id >= 0)
+        const int         id     = prm.get_integer("Boundary id");
+        const std::string region = boundary_region(prm, section, id);
+        if (id >= 0 || !region.empty())
           {
             DirichletCondition c;
-            c.boundary_id = id;
-            c.subsection  = section;
+            c.boundary_id     = std::max(id, 0);
+            c.boundary_region = region;
+            c.subsection      = section;
             for (const auto &name :
                  dealii::Utilities::split_string_list(prm.get("Components")))
               {
@@ -211,13 +251,15 @@ namespace hyperelastic
         {
           const std::string section = kind.name + " " + std::to_string(i);
           prm.enter_subsection(section);
-          const int id = prm.get_integer("Boundary id");
-          if (id >= 0)
+          const int         id     = prm.get_integer("Boundary id");
+          const std::string region = boundary_region(prm, section, id);
+          if (id >= 0 || !region.empty())
             boundary_loads.push_back(
               {kind.name,
-               static_cast<dealii::types::boundary_id>(id),
+               static_cast<dealii::types::boundary_id>(std::max(id, 0)),
                split_expressions(prm.get(kind.name)),
-               section});
+               section,
+               region});
           prm.leave_subsection();
         }
     for (unsigned int i = 1; i <= max_point_loads; ++i)
@@ -294,16 +336,25 @@ namespace hyperelastic
     // Two conditions on the same id and component contradict each other.
     for (unsigned int a = 0; a < dirichlet.size(); ++a)
       for (unsigned int b = a + 1; b < dirichlet.size(); ++b)
-        if (dirichlet[a].boundary_id == dirichlet[b].boundary_id)
+        if (dirichlet[a].boundary_region == dirichlet[b].boundary_region &&
+            (!dirichlet[a].boundary_region.empty() ||
+             dirichlet[a].boundary_id == dirichlet[b].boundary_id))
           for (const unsigned int ca : dirichlet[a].components)
             for (const unsigned int cb : dirichlet[b].components)
               if (ca == cb &&
                   (dirichlet[a].vertex.empty() || dirichlet[b].vertex.empty() ||
                    dirichlet[a].vertex == dirichlet[b].vertex))
-                reject(dirichlet[b].subsection + "/Boundary id",
-                       std::to_string(dirichlet[b].boundary_id),
-                       "component " + std::string(1, "xyz"[ca]) +
-                         " of this boundary id is already prescribed in " +
-                         dirichlet[a].subsection);
+                {
+                  const bool by_region = !dirichlet[b].boundary_region.empty();
+                  reject(dirichlet[b].subsection +
+                           (by_region ? "/Boundary region" : "/Boundary id"),
+                         by_region ? dirichlet[b].boundary_region
+                                   : std::to_string(dirichlet[b].boundary_id),
+                         "component " + std::string(1, "xyz"[ca]) +
+                           " of this boundary " +
+                           (by_region ? "region" : "id") +
+                           " is already prescribed in " +
+                           dirichlet[a].subsection);
+                }
   }
 } // namespace hyperelastic

@@ -69,6 +69,21 @@ namespace hyperelastic
       build_amg(A, true, true);
   }
 
+  void
+  LinearSolver::set_stiffness_contrast(const double ratio)
+  {
+    stiffness_contrast = ratio;
+  }
+
+  bool
+  LinearSolver::amg_for_contrast() const
+  {
+    using Contrast = LinearSolverParameters::Contrast;
+    return parameters.amg_for_contrast == Contrast::on ||
+           (parameters.amg_for_contrast == Contrast::automatic &&
+            stiffness_contrast > LinearSolverParameters::contrast_threshold);
+  }
+
   std::string
   LinearSolver::description() const
   {
@@ -81,8 +96,11 @@ namespace hyperelastic
       return "GMRES with a block-triangular preconditioner (ML AMG with "
              "rigid-body modes on the displacement block, lumped pressure "
              "mass for the Schur complement); saddle-point tangent";
-    return krylov_name() + " with ML AMG (rigid-body near-null space)" +
-           (symmetric ? "" : "; the tangent is not symmetric");
+    return krylov_name() + " with ML AMG (rigid-body near-null space" +
+           (amg_for_contrast() ? "; for contrast: energy-minimizing "
+                                 "prolongators"
+                               : "") +
+           ")" + (symmetric ? "" : "; the tangent is not symmetric");
   }
 
   void
@@ -120,7 +138,11 @@ namespace hyperelastic
     // ML smoothed aggregation with the full rigid-body near-null space.
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
-    data.aggregation_threshold = parameters.aggregation_threshold;
+    data.aggregation_threshold =
+      amg_for_contrast()
+        ? std::max(parameters.aggregation_threshold,
+                   LinearSolverParameters::contrast_aggregation_threshold)
+        : parameters.aggregation_threshold;
     data.smoother_sweeps       = parameters.smoother_sweeps;
     data.smoother_type         = "Chebyshev";
     data.coarse_type           = "Amesos-KLU";
@@ -130,6 +152,14 @@ namespace hyperelastic
     ml_list.set("PDE equations", static_cast<int>(n_components));
     if (!parameters.smoothed_aggregation)
       ml_list.set("aggregation: damping factor", 0.);
+    // Parts of very different stiffness: prolongators that minimize the
+    // energy of the coarse basis functions (across a stiff-soft interface a
+    // damped-Jacobi step smears them into the stiff part).
+    if (amg_for_contrast() && parameters.smoothed_aggregation)
+      {
+        ml_list.set("energy minimization: enable", true);
+        ml_list.set("energy minimization: type", 2);
+      }
     // The mixed formulation: AMG on the displacement block only.
     if (saddle_point)
       block_null_space = saddle_point->displacement_rows(null_space, n_modes);

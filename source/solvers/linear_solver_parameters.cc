@@ -107,6 +107,22 @@ namespace hyperelastic
       "fails with it for a tangent, that solve is repeated with ML on the "
       "whole tangent. The mixed formulation keeps its own block "
       "preconditioner.");
+    prm.declare_entry(
+      "AMG for contrast",
+      "auto",
+      Selection("auto|true|false"),
+      "ML settings for parts of very different stiffness (steel bonded to "
+      "rubber): energy-minimizing prolongators (ML's 'energy minimization', "
+      "type 2) instead of damped-Jacobi smoothing, and an 'AMG aggregation "
+      "threshold' of at least 0.01, so that aggregates do not straddle a "
+      "stiff and a soft part. 'auto': on when the scene's regions (with "
+      "cells) differ in small-strain stiffness lambda + 2 mu by more than a "
+      "factor 10. Measured on a twisted rubber bar with a bonded steel "
+      "band, E 1e4 apart (benchmarks/regions): CG iterations per Newton "
+      "step 2.8x the one-material bar's without, 1.5x with, and 0.4x the "
+      "run time. Only for the P1 preconditioner and the mixed formulation's "
+      "displacement block (the two-level P2 preconditioner keeps its "
+      "settings).");
     prm.leave_subsection();
   }
 
@@ -129,6 +145,10 @@ namespace hyperelastic
     amg_rebuild_growth    = prm.get_double("AMG rebuild growth");
     amg_reuse_aggregates  = prm.get_bool("AMG reuse aggregates");
     p2_two_level          = prm.get("P2 preconditioner") == "two-level";
+    const std::string contrast = prm.get("AMG for contrast");
+    amg_for_contrast           = contrast == "auto" ? Contrast::automatic
+                                 : contrast == "true" ? Contrast::on
+                                                      : Contrast::off;
     prm.leave_subsection();
   }
 } // namespace hyperelastic

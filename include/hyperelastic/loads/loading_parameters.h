@@ -19,6 +19,8 @@ namespace hyperelastic
   /// A displacement prescribed on one boundary id for some components.
   struct DirichletCondition
   {
+    /// The faces: a boundary id of the mesh, or (boundary_region not empty)
+    /// the id that assign_boundary_regions() gives the faces of the region.
     dealii::types::boundary_id boundary_id = 0;
     std::vector<unsigned int>  components;  ///< 0 = x, 1 = y, 2 = z
     std::vector<std::string>   expressions; ///< one per entry of components
@@ -26,6 +28,9 @@ namespace hyperelastic
     /// Reference coordinates of the one vertex of the boundary that is
     /// constrained ("Vertex"); empty: the whole boundary.
     std::vector<double> vertex;
+    /// 'Boundary region': a condition on the face centre (an expression of
+    /// x, y, z); empty: the section names a 'Boundary id'.
+    std::string boundary_region;
   };
 
   /// A force on one mesh vertex ("Point load 1", ...).
@@ -52,7 +57,8 @@ namespace hyperelastic
     std::string value_documentation;
   };
 
-  /// One used section of a boundary load (its boundary id is >= 0).
+  /// One used section of a boundary load (a boundary id >= 0 or a
+  /// boundary region).
   struct BoundaryLoadSection
   {
     std::string                kind; ///< BoundaryLoadKind::name
@@ -60,6 +66,8 @@ namespace hyperelastic
     /// The value entry split at ';' (dim of them for a vector-valued kind).
     std::vector<std::string> expressions;
     std::string              subsection; ///< "Traction 1", for messages
+    /// As DirichletCondition::boundary_region.
+    std::string boundary_region;
   };
 
   struct LoadingParameters
@@ -86,7 +94,7 @@ namespace hyperelastic
     void
     check_dimension(unsigned int dim) const;
     /// No two Dirichlet conditions prescribe the same component of the same
-    /// boundary id (and vertex).
+    /// boundary id or boundary region (and vertex).
     void
     check_dirichlet_conflicts() const;
   };

@@ -31,6 +31,17 @@ namespace hyperelastic
                         unsigned int        n_modes,
                         unsigned int        n_components);
 
+    /// The ratio of the largest to the smallest stiffness of the scene's
+    /// parts (1 for one material): with 'AMG for contrast = auto', above
+    /// LinearSolverParameters::contrast_threshold the AMG is built for
+    /// contrast. Call before the first prepare().
+    void
+    set_stiffness_contrast(double ratio);
+
+    /// Whether the AMG is built for contrast ('AMG for contrast').
+    bool
+    amg_for_contrast() const;
+
     /// The mixed formulation: the matrices to come are saddle points,
     /// solved with GMRES and @p preconditioner (AMG on their displacement
     /// block, built as below).
@@ -175,6 +186,8 @@ namespace hyperelastic
     bool replacement_in_use = false;
     /// The displacement rows of null_space (saddle point only).
     std::vector<double> block_null_space;
+    /// set_stiffness_contrast().
+    double stiffness_contrast = 1.;
 
     /// Computes the hierarchy for @p A now: the replacement preconditioner
     /// if there is one and @p may_use_replacement; else ML, refreshed on

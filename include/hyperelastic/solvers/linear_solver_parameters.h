@@ -39,6 +39,18 @@ namespace hyperelastic
     /// preconditioner (TwoLevelPreconditioner) instead of ML on the P2
     /// matrix.
     bool p2_two_level = true;
+    /// 'AMG for contrast': auto (on for regions whose stiffnesses differ
+    /// by more than contrast_threshold), on or off. On: ML's
+    /// energy-minimizing prolongators and an aggregation threshold of at
+    /// least contrast_aggregation_threshold.
+    enum class Contrast
+    {
+      automatic,
+      on,
+      off
+    } amg_for_contrast = Contrast::automatic;
+    static constexpr double contrast_threshold             = 10.;
+    static constexpr double contrast_aggregation_threshold = 0.01;
 
     static void
     declare(ParameterHandler &prm);
