@@ -49,10 +49,10 @@ namespace
       LoadingParameters loading;
       if (closed)
         loading.boundary_loads.push_back(
-          {"Pressure", whole_boundary, {"0.7*t"}, "Pressure 1"});
+          {"Pressure", whole_boundary, {"0.7*t"}, "Pressure 1", ""});
       else
         loading.boundary_loads.push_back(
-          {"Pressure", 1, {"1 + x*y + t"}, "Pressure 1"});
+          {"Pressure", 1, {"1 + x*y + t"}, "Pressure 1", ""});
       std::set<types::boundary_id> ids = box.boundary_ids;
       ids.insert(whole_boundary);
       bc = std::make_unique<BoundaryConditions<dim>>(loading, ids);

@@ -50,7 +50,7 @@ namespace
     LoadingParameters loading;
     const std::string xyz[] = {"x", "y", "z"};
     // Clamped and moved at x = 0, only the x component moved at x = 3.
-    DirichletCondition left{0, {}, {}, "Dirichlet 1", {}};
+    DirichletCondition left{0, {}, {}, "Dirichlet 1", {}, ""};
     for (unsigned int d = 0; d < dim; ++d)
       {
         left.components.push_back(d);
@@ -58,9 +58,9 @@ namespace
                                    std::to_string(d) + ")");
       }
     loading.dirichlet.push_back(left);
-    loading.dirichlet.push_back({1, {0}, {"0.4*t"}, "Dirichlet 2", {}});
+    loading.dirichlet.push_back({1, {0}, {"0.4*t"}, "Dirichlet 2", {}, ""});
     loading.boundary_loads.push_back(
-      {"Traction", 2, std::vector<std::string>(dim, "0.3*t*x"), "Traction 1"});
+      {"Traction", 2, std::vector<std::string>(dim, "0.3*t*x"), "Traction 1", ""});
     loading.body_force = std::vector<std::string>(dim, "-0.2*t");
     const BoundaryConditions<dim> bc(loading, box.boundary_ids);
     const ElasticityOperator<dim> fast(dof_handler, mapping, *material, bc);

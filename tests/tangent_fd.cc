@@ -39,7 +39,7 @@ namespace
     // Loads do not enter the tangent; a traction checks they stay out of it.
     LoadingParameters loading;
     loading.boundary_loads.push_back(
-      {"Traction", 1, std::vector<std::string>(dim, "0.3*t"), "Traction 1"});
+      {"Traction", 1, std::vector<std::string>(dim, "0.3*t"), "Traction 1", ""});
     const BoundaryConditions<dim> bc(loading, box.boundary_ids);
     const ElasticityOperator<dim> op(box.dof_handler, box.mapping, *material, bc);
 

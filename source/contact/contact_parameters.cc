@@ -118,8 +118,9 @@ namespace hyperelastic
         prm.declare_entry("File",
                           "",
                           Anything(),
-                          "mesh: the gmsh file of the obstacle's surface "
-                          "(lines in 2D, triangles in 3D; a relative path is "
+                          "mesh: the mesh file of the obstacle's surface "
+                          "(lines in 2D, triangles in 3D; .msh, .mesh or .vtk "
+                          "as for Mesh/File; a relative path is "
                           "read relative to the folder of the scene file). "
                           "The body must start outside it.");
         prm.declare_entry("Motion",
@@ -194,9 +195,9 @@ namespace hyperelastic
         for (const auto &v :
              dealii::Utilities::split_string_list(prm.get("Normal")))
           o.normal.push_back(dealii::Utilities::string_to_double(v));
-        o.radius   = get_finite(prm, o.subsection, "Radius");
-        o.file     = prm.get("File");
-        o.motion   = split_expressions(prm.get("Motion"));
+        o.radius                    = get_finite(prm, o.subsection, "Radius");
+        o.file                      = prm.get("File");
+        o.motion                    = split_expressions(prm.get("Motion"));
         const std::string axis_text = prm.get("Rotation axis");
         for (const auto &v : dealii::Utilities::split_string_list(axis_text))
           o.rotation_axis.push_back(dealii::Utilities::string_to_double(v));

@@ -4,7 +4,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/contact/obstacle_surface.h>
-#include <hyperelastic/mesh/gmsh_reader.h>
+#include <hyperelastic/mesh/mesh_file.h>
 
 #include <algorithm>
 #include <cmath>
@@ -93,7 +93,7 @@ namespace hyperelastic
   ObstacleSurface<dim>::ObstacleSurface(const std::string &file_name,
                                         const std::string &entry)
   {
-    const GmshMesh<dim> mesh = read_gmsh<dim>(file_name, entry, false);
+    const GmshMesh<dim> mesh = read_mesh_file<dim>(file_name, entry, false);
     vertices                 = mesh.vertices;
     if constexpr (dim == 2)
       for (const auto &line : mesh.boundary.boundary_lines)

@@ -6,12 +6,14 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/cell_ordering.h>
-#include <hyperelastic/mesh/gmsh_reader.h>
 #include <hyperelastic/mesh/mesh_checks.h>
+#include <hyperelastic/mesh/mesh_file.h>
 #include <hyperelastic/mesh/surface_mesher.h>
 
 #include <algorithm>
 #include <array>
+#include <cctype>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -52,10 +54,26 @@ namespace hyperelastic
     // create_triangulation accepts inverted and zero-volume cells; neither
     // notices folds. Hence the checks here.
 
-    const Numbering gmsh_numbering = {
-      "gmsh element",
-      "gmsh elements",
-      "(the element numbers of the file's $Elements section)"};
+    /// The element numbers of a mesh file as its format has them (see
+    /// read_mesh_file()).
+    Numbering
+    file_numbering(const std::string &file_name)
+    {
+      std::string extension =
+        std::filesystem::path(file_name).extension().string();
+      for (char &c : extension)
+        c = std::tolower(static_cast<unsigned char>(c));
+      if (extension == ".mesh")
+        return {"MEDIT element",
+                "MEDIT elements",
+                "(the positions in the file's Tetrahedra, Triangles or Edges "
+                "section, from 1)"};
+      if (extension == ".vtk")
+        return {"VTK cell", "VTK cells", "(the file's cell ids, from 0)"};
+      return {"gmsh element",
+              "gmsh elements",
+              "(the element numbers of the file's $Elements section)"};
+    }
 
     /// "3, 7, 12" (at most 10, then "and N more").
     std::string
@@ -185,7 +203,8 @@ namespace hyperelastic
     void
     find_faces(CheckedMesh<dim>             &mesh,
                const std::vector<long long> &boundary_numbers,
-               const std::string            &where)
+               const std::string            &where,
+               const Numbering              &numbering)
     {
       constexpr unsigned int n_faces = dim + 1;
       const ReferenceCell    simplex = ReferenceCells::get_simplex<dim>();
@@ -248,8 +267,9 @@ namespace hyperelastic
             where + ": " + std::to_string(n_crowded) + " " +
             (dim == 2 ? "edge" : "face") + (n_crowded == 1 ? " is" : "s are") +
             " shared by more than two cells (the mesh is not a manifold "
-            "there, or has duplicated cells): gmsh elements " +
-            list_numbers(crowded) + " " + gmsh_numbering.note);
+            "there, or has duplicated cells): " +
+            numbering.plural + " " + list_numbers(crowded) + " " +
+            numbering.note);
         }
 
       // Boundary ids from the lower-dimensional elements; a later element
@@ -291,10 +311,9 @@ namespace hyperelastic
           (dim == 2 ? "line" : "triangle") +
           (inside.size() == 1 ? " element lies" : " elements lie") +
           " inside the mesh, on " + (dim == 2 ? "edges" : "faces") +
-          " between two cells, where a physical tag cannot be a boundary id: "
-          "gmsh " +
-          (inside.size() == 1 ? "element " : "elements ") +
-          list_numbers(inside) + " " + gmsh_numbering.note);
+          " between two cells, where a physical tag cannot be a boundary id: " +
+          (inside.size() == 1 ? numbering.singular : numbering.plural) + " " +
+          list_numbers(inside) + " " + numbering.note);
     }
 
     template <int dim>
@@ -432,7 +451,7 @@ namespace hyperelastic
     GmshMesh<dim> file =
       parameters && parameters->source == MeshSource::surface
         ? mesh_closed_surface<dim>(*parameters, statistics.generated_mesh)
-        : read_gmsh<dim>(file_name);
+        : read_mesh_file<dim>(file_name);
     statistics.read_time = timer.wall_time();
     timer.restart();
 
@@ -474,7 +493,8 @@ namespace hyperelastic
           }
       }
 
-    find_faces(mesh, file.boundary_numbers, where);
+    const Numbering numbering = file_numbering(file_name);
+    find_faces(mesh, file.boundary_numbers, where, numbering);
     statistics.build_time = timer.wall_time() - statistics.order_time;
 
     // Folds.
@@ -509,7 +529,7 @@ namespace hyperelastic
                                             degenerate_numbers,
                                             inverted_numbers,
                                             inverted_listed,
-                                            gmsh_numbering));
+                                            numbering));
       }
     statistics.check_time =
       timer.wall_time() - statistics.build_time - statistics.order_time;

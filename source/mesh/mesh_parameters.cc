@@ -1,4 +1,5 @@
-// The scene's Mesh subsection: declaration, documentation and validation of its entries.
+// The scene's Mesh subsection: declaration, documentation and validation of its
+// entries.
 #include <deal.II/base/utilities.h>
 
 #include <hyperelastic/base/error_handling.h>
@@ -22,8 +23,8 @@ namespace hyperelastic
       Selection("box|file|surface"),
       "'box': a generated box of simplices (rectangle in 2D) with boundary ids "
       "0/1 on the faces x = min/max, 2/3 on y = min/max, 4/5 on z = min/max. "
-      "'file': a gmsh .msh file (format 1, 2.2, 4.0 or 4.1, ASCII) whose physical tags on "
-      "boundary faces become boundary ids. "
+      "'file': a mesh file (see File) whose tags on cells become material "
+      "ids and on boundary faces boundary ids. "
       "'surface': a closed triangulated surface (OBJ, STL ASCII or binary, "
       "PLY ASCII or binary little-endian, OFF; 3D only) filled with "
       "tetrahedra on the fly by gmsh's Delaunay mesher, keeping the "
@@ -36,8 +37,13 @@ namespace hyperelastic
     prm.declare_entry("File",
                       "",
                       Anything(),
-                      "Mesh file for Source = file, surface file for "
-                      "Source = surface; a relative path is read "
+                      "Mesh file for Source = file, its format chosen by the "
+                      "extension: .msh (gmsh; ASCII formats 1, 2.2, 4.0, 4.1, "
+                      "binary 2.2 and 4.1), .mesh (MEDIT, ASCII), .vtk "
+                      "(legacy VTK unstructured grid, ASCII or binary; ids "
+                      "from the cell data array MaterialID, gmsh:physical or "
+                      "CellEntityIds). For Source = surface a closed surface "
+                      "file (.obj, .stl, .ply, .off). A relative path is read "
                       "relative to the folder of the scene file.");
     prm.declare_entry(
       "Mesh size",

@@ -1,7 +1,7 @@
-// Reading a gmsh file into a list of cells: one pass over the ASCII file
-// (formats 1, 2.2, 4.0 and 4.1), the cells deal.II's GridIn::read_msh would
-// build, with the gmsh element number of every cell and the physical tags as
-// material ids (cells) and boundary ids (faces).
+// Reading a gmsh file into a list of cells: one pass over the file (ASCII
+// formats 1, 2.2, 4.0 and 4.1; binary 2.2 and 4.1), the cells deal.II's
+// GridIn::read_msh would build, with the gmsh element number of every cell and
+// the physical tags as material ids (cells) and boundary ids (faces).
 #pragma once
 
 #include <deal.II/base/point.h>
@@ -31,7 +31,8 @@ namespace hyperelastic
     dealii::Point<3> lower, upper;
   };
 
-  /// Reads an ASCII gmsh file, format 1, 2 or 4, as a mesh of triangles
+  /// Reads a gmsh file (ASCII: format 1, 2 or 4; binary: format 2.2 or
+  /// 4.1, little- or big-endian), as a mesh of triangles
   /// (dim = 2) or tetrahedra (dim = 3). Points, lines and, in 3D,
   /// triangles carry boundary ids; any other element type is an error.
   /// Errors name the scene entry @p entry. Without @p cells_required a
