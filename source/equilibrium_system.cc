@@ -302,6 +302,10 @@ namespace hyperelastic
       elasticity->is_conservative() && parts.formulation.has_potential();
     if (!parts.formulation.has_potential())
       properties.why_no_potential = parts.formulation.why_no_potential();
+    const BoundaryConditions<dim> &loads = parts.boundary_conditions;
+    properties.displacement_controlled =
+      properties.has_potential && loads.boundary_loads.empty() &&
+      loads.point_loads.empty() && !loads.body_force;
     return properties;
   }
 

@@ -129,6 +129,15 @@ namespace hyperelastic
       }
     else
       system.store_converged_state();
+    // Snap steps (Load stepping/Snap iterations): under displacement
+    // control only, once from each converged state.
+    const bool may_snap = label == "Load step" &&
+                          parameters.snap_iterations > 0 &&
+                          system.properties().displacement_controlled;
+    bool   snapping     = false;
+    double snapped_from = -1.;
+    // The increment the cut-backs resume with after a failed snap step.
+    double before_snap = 0.;
     while (t < end)
       {
         // Land exactly on t = end (no sliver of a last step): a remainder
@@ -139,18 +148,45 @@ namespace hyperelastic
           (t + increment > end - 1e-6 * nominal) ? end : t + increment;
         pcout << "\n"
               << label << " " << step.step + 1 << ": t = " << t_next
-              << " (increment " << t_next - t << ")" << std::endl;
+              << " (increment " << t_next - t << ")"
+              << (snapping ? ", snap step" : "") << std::endl;
         system.set_load_factor(t_next);
         NewtonResult result;
         try
           {
-            result = newton.solve(system);
+            result = snapping
+                       ? newton.solve(system, parameters.snap_iterations)
+                       : newton.solve(system);
           }
         catch (const ConvergenceFailure &failure)
           {
             system.restore_converged_state();
-            easy_steps_in_a_row        = 0;
-            const double       smaller = 0.5 * (t_next - t);
+            easy_steps_in_a_row = 0;
+            double smaller      = 0.5 * (t_next - t);
+            if (snapping)
+              {
+                // The snap did not work: the cut-backs go on where they
+                // stopped.
+                snapping = false;
+                smaller  = before_snap;
+              }
+            else if (may_snap && snapped_from != t &&
+                     smaller < LoadSteppingParameters::snap_fraction * nominal)
+              {
+                snapping     = true;
+                snapped_from = t;
+                before_snap  = smaller;
+                ++step.cut_backs;
+                increment = nominal;
+                pcout << "   cut-back " << step.cut_backs << ": "
+                      << first_line(failure.what())
+                      << "\n   the increment would fall below 1/16 of the "
+                         "nominal one: a snap step from t = "
+                      << t << " with the nominal increment and up to "
+                      << parameters.snap_iterations << " Newton iterations"
+                      << std::endl;
+                continue;
+              }
             std::ostringstream where;
             where << "from t = " << t << " to t = " << t_next << ": "
                   << failure.what();
@@ -181,6 +217,7 @@ namespace hyperelastic
             continue;
           }
 
+        snapping = false;
         step.step += 1;
         step.load_factor = t_next;
         step.increment   = t_next - t;

@@ -63,6 +63,22 @@ namespace hyperelastic
                       Double(0, 1),
                       "Smallest load-factor increment; below it the run "
                       "stops with a convergence failure (exit status 3).");
+    prm.declare_entry(
+      "Snap iterations",
+      "200",
+      Integer(0),
+      "Snaps under displacement control (load control of a scene whose "
+      "load factor moves only prescribed displacements and obstacles: no "
+      "traction, pressure, body force or point load, so that every load "
+      "factor has an energy minimum). Where a cut-back would take the "
+      "increment below 1/16 of the nominal one (the path folds or "
+      "bifurcates within the step: a buckle, a snap-through), the step is "
+      "tried once instead at the nominal increment with up to this many "
+      "Newton iterations: the energy descent of Newton's line search (and "
+      "the trust region of 'Newton/Follow negative curvature') leaves the "
+      "ended branch for an equilibrium beyond the fold. If the snap step "
+      "fails too, the cut-backs continue as before. The Newton table "
+      "prints 'snap step'. 0: no snap steps.");
     prm.declare_entry("Easy step iterations",
                       "6",
                       Integer(1),
@@ -93,6 +109,7 @@ namespace hyperelastic
     adaptive             = prm.get_bool("Adaptive");
     minimum_increment    = prm.get_double("Minimum increment");
     easy_step_iterations = prm.get_integer("Easy step iterations");
+    snap_iterations      = prm.get_integer("Snap iterations");
     secant_predictor     = prm.get("Predictor") == "secant";
     method = prm.get("Method") == "arc length" ? LoadControl::arc_length
                                                : LoadControl::load_control;

@@ -572,6 +572,13 @@ namespace hyperelastic
   NewtonResult
   NewtonSolver::solve(NonlinearSystem &system) const
   {
+    return solve(system, parameters.max_iterations);
+  }
+
+  NewtonResult
+  NewtonSolver::solve(NonlinearSystem   &system,
+                      const unsigned int max_iterations) const
+  {
     const ConvergenceTest             convergence(parameters);
     const TangentPolicy               policy(parameters.tangent,
                                parameters.follow_negative_curvature);
@@ -588,7 +595,7 @@ namespace hyperelastic
 
     SolveState state;
     for (unsigned int it = 1;
-         it - state.budget_start <= parameters.max_iterations;
+         it - state.budget_start <= max_iterations;
          ++it)
       {
         NewtonIteration row =
@@ -619,8 +626,11 @@ namespace hyperelastic
           return result;
       }
     throw ConvergenceFailure("Newton did not converge in " +
-                             std::to_string(parameters.max_iterations) +
-                             " iterations (Newton/Max iterations)\n" +
+                             std::to_string(max_iterations) +
+                             (max_iterations == parameters.max_iterations
+                                ? " iterations (Newton/Max iterations)\n"
+                                : " iterations (a snap step's budget, "
+                                  "'Load stepping/Snap iterations')\n") +
                              table(result));
   }
 } // namespace hyperelastic

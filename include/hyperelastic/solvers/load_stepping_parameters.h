@@ -30,6 +30,11 @@ namespace hyperelastic
     bool         adaptive             = true;
     double       minimum_increment    = 1e-4;
     unsigned int easy_step_iterations = 6;
+    /// 'Snap iterations': Newton's budget for a snap step (0: none).
+    unsigned int snap_iterations = 200;
+    /// A snap step is tried where a cut-back would take the increment
+    /// below this fraction of the nominal one.
+    static constexpr double snap_fraction = 1. / 16.;
     /// Start each load step after the first from the secant extrapolation
     /// of the last two converged states (if admissible).
     bool secant_predictor = false;

@@ -57,6 +57,10 @@ namespace hyperelastic
       bool has_potential = true;
       /// Why there is no potential (for the Newton table).
       std::string why_no_potential = "a load has no potential";
+      /// The load factor moves only prescribed values (and obstacles): no
+      /// force scales with it, so every load factor has an energy minimum,
+      /// and a step past a fold may snap to it (LoadStepper).
+      bool displacement_controlled = false;
     };
 
     /// The system's Properties; they do not change during a solve.
@@ -252,6 +256,11 @@ namespace hyperelastic
     /// through).
     NewtonResult
     solve(NonlinearSystem &system) const;
+
+    /// The same with @p max_iterations instead of 'Newton/Max iterations'
+    /// (a snap step's larger budget).
+    NewtonResult
+    solve(NonlinearSystem &system, unsigned int max_iterations) const;
 
     /// The Newton table of @p result as text.
     static std::string
