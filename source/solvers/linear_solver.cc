@@ -61,12 +61,18 @@ namespace hyperelastic
   {
     if (parameters.type == LinearSolverType::direct)
       return;
-    // A new matrix object (the tangent's sparsity grew: self-contact) needs
-    // a new hierarchy; the kept one would refer to the old matrix.
+    // A new matrix object (the tangent's sparsity grew: self-contact; the
+    // trust region's projected tangent) needs a new hierarchy; the kept one
+    // would refer to the old matrix. Whether the object is new is decided
+    // over all ranks: a reallocated matrix may land at the old address on
+    // one rank and not on another, and ranks that disagree would enter ML's
+    // collective set-up out of step (seen as an ML error and a hang).
+    const bool new_matrix = Utilities::MPI::max(
+                              int(&A.trilinos_matrix() != amg_matrix),
+                              A.get_mpi_communicator()) != 0;
     if (!amg_built || rebuild_requested ||
-        parameters.amg_rebuild_growth == 0. ||
-        &A.trilinos_matrix() != amg_matrix)
-      build_amg(A, true, true);
+        parameters.amg_rebuild_growth == 0. || new_matrix)
+      build_amg(A, !new_matrix, true);
   }
 
   void
