@@ -755,36 +755,22 @@ namespace hyperelastic
                   const int        physical,
                   const long long *element_nodes)
       {
+        const auto vertices = [&](const unsigned int n) {
+          std::array<unsigned int, 4> v{};
+          for (unsigned int k = 0; k < n; ++k)
+            v[k] = vertex(tag, element_nodes[k]);
+          return v;
+        };
         if (type == simplex_type)
+          mesh.add_cell(vertices(dim + 1), physical, tag);
+        else if (type == 1) // line: a face in 2D (checked, dropped in 3D)
           {
-            CellData<dim> cell(dim + 1);
-            for (unsigned int k = 0; k <= dim; ++k)
-              cell.vertices[k] = vertex(tag, element_nodes[k]);
-            cell.material_id = physical;
-            mesh.cells.push_back(std::move(cell));
-            mesh.element_numbers.push_back(tag);
-          }
-        else if (type == 1) // line: a face in 2D
-          {
-            CellData<1> line;
-            for (unsigned int k = 0; k < 2; ++k)
-              line.vertices[k] = vertex(tag, element_nodes[k]);
-            line.boundary_id = physical;
+            const auto v = vertices(2);
             if (dim == 2)
-              {
-                mesh.boundary.boundary_lines.push_back(line);
-                mesh.boundary_numbers.push_back(tag);
-              }
+              mesh.add_face(v, physical, tag);
           }
         else if (dim == 3 && type == 2) // triangle: boundary id of a face
-          {
-            CellData<2> triangle(3);
-            for (unsigned int k = 0; k < 3; ++k)
-              triangle.vertices[k] = vertex(tag, element_nodes[k]);
-            triangle.boundary_id = physical;
-            mesh.boundary.boundary_quads.push_back(std::move(triangle));
-            mesh.boundary_numbers.push_back(tag);
-          }
+          mesh.add_face(vertices(3), physical, tag);
         else if (type != 15) // points carry nothing for dim > 1
           {
             if (n_unsupported++ == 0)

@@ -249,42 +249,20 @@ namespace hyperelastic
                       ") has the reference " + std::to_string(reference) +
                       ", which is not a valid " +
                       (role == Role::cell ? "material" : "boundary") + " id");
-            add(role, n_nodes, v, reference, i + 1);
+            add(role, v, reference, i + 1);
           }
       }
 
       void
       add(const Role                         role,
-          const int                          n_nodes,
           const std::array<unsigned int, 4> &v,
           const long long                    reference,
           const long long                    number)
       {
         if (role == Role::cell)
-          {
-            CellData<dim> cell(dim + 1);
-            std::copy(v.begin(), v.begin() + n_nodes, cell.vertices.begin());
-            cell.material_id = reference;
-            mesh.cells.push_back(std::move(cell));
-            mesh.element_numbers.push_back(number);
-          }
-        else if constexpr (dim == 2)
-          {
-            CellData<1> line;
-            line.vertices[0] = v[0];
-            line.vertices[1] = v[1];
-            line.boundary_id = reference;
-            mesh.boundary.boundary_lines.push_back(line);
-            mesh.boundary_numbers.push_back(number);
-          }
+          mesh.add_cell(v, reference, number);
         else
-          {
-            CellData<2> triangle(3);
-            std::copy(v.begin(), v.begin() + 3, triangle.vertices.begin());
-            triangle.boundary_id = reference;
-            mesh.boundary.boundary_quads.push_back(std::move(triangle));
-            mesh.boundary_numbers.push_back(number);
-          }
+          mesh.add_face(v, reference, number);
       }
 
       MeshFileText          in;

@@ -587,30 +587,9 @@ namespace hyperelastic
           const long long                    number)
       {
         if (cell)
-          {
-            CellData<dim> c(dim + 1);
-            std::copy(v.begin(), v.begin() + dim + 1, c.vertices.begin());
-            c.material_id = id;
-            mesh.cells.push_back(std::move(c));
-            mesh.element_numbers.push_back(number);
-          }
-        else if constexpr (dim == 2)
-          {
-            CellData<1> line;
-            line.vertices[0] = v[0];
-            line.vertices[1] = v[1];
-            line.boundary_id = id;
-            mesh.boundary.boundary_lines.push_back(line);
-            mesh.boundary_numbers.push_back(number);
-          }
+          mesh.add_cell(v, id, number);
         else
-          {
-            CellData<2> triangle(3);
-            std::copy(v.begin(), v.begin() + 3, triangle.vertices.begin());
-            triangle.boundary_id = id;
-            mesh.boundary.boundary_quads.push_back(std::move(triangle));
-            mesh.boundary_numbers.push_back(number);
-          }
+          mesh.add_face(v, id, number);
       }
 
       MeshFileText              in;

@@ -7,6 +7,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <algorithm>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,38 @@ namespace hyperelastic
     std::vector<long long> element_numbers; ///< of cells
     /// Bounds of the nodes of the cells, in all three coordinates.
     dealii::Point<3> lower, upper;
+
+    /// Appends a cell of the vertices @p v[0 ... dim] with material id
+    /// @p material_id; @p number: the element's number in the file (for
+    /// messages).
+    void
+    add_cell(const std::array<unsigned int, 4> &v,
+             const unsigned int                 material_id,
+             const long long                    number)
+    {
+      dealii::CellData<dim> cell(dim + 1);
+      std::copy(v.begin(), v.begin() + dim + 1, cell.vertices.begin());
+      cell.material_id = material_id;
+      cells.push_back(std::move(cell));
+      element_numbers.push_back(number);
+    }
+
+    /// Appends a boundary face (a line in 2D, a triangle in 3D) of the
+    /// vertices @p v[0 ... dim - 1] with boundary id @p boundary_id.
+    void
+    add_face(const std::array<unsigned int, 4> &v,
+             const unsigned int                 boundary_id,
+             const long long                    number)
+    {
+      dealii::CellData<dim - 1> face(dim);
+      std::copy(v.begin(), v.begin() + dim, face.vertices.begin());
+      face.boundary_id = boundary_id;
+      if constexpr (dim == 2)
+        boundary.boundary_lines.push_back(std::move(face));
+      else
+        boundary.boundary_quads.push_back(std::move(face));
+      boundary_numbers.push_back(number);
+    }
   };
 
   /// Reads a gmsh file (ASCII: format 1, 2 or 4; binary: format 2.2 or
