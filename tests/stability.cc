@@ -638,6 +638,39 @@ namespace
                     followed.back().newton_history.back().probed_stable);
   }
 
+  /// A structure of the mesh file @p mesh (neo-Hookean, E = 1000,
+  /// nu = 0.3; 10 nominal load steps; negative curvature followed, for the
+  /// probe of the accepted states) held by @p supports (Dirichlet
+  /// sections) and pressed by a rigid frictionless plane through @p point
+  /// with normal @p normal (into the body) moved by @p motion; the output
+  /// point @p probe.
+  std::string
+  plate_scene(const int          dim,
+              const std::string &mesh,
+              const std::string &supports,
+              const std::string &point,
+              const std::string &normal,
+              const std::string &motion,
+              const std::string &probe)
+  {
+    return subsection("Problem", entry("Dimension", std::to_string(dim))) +
+           subsection("Mesh", entry("Source", "file") + entry("File", mesh)) +
+           subsection("Material",
+                      entry("Model", "neo-Hookean") +
+                        entry("Young's modulus", "1000") +
+                        entry("Poisson's ratio", "0.3")) +
+           subsection("Loading", entry("Number of load steps", "10")) +
+           subsection("Newton", entry("Follow negative curvature", "true")) +
+           supports +
+           subsection("Contact",
+                      subsection("Obstacle 1",
+                                 entry("Type", "plane") +
+                                   entry("Point", point) +
+                                   entry("Normal", normal) +
+                                   entry("Motion", motion))) +
+           subsection("Output", entry("Points", probe));
+  }
+
   /// A snap under displacement control: the clamped shallow arch of
   /// meshes/arch_2d.msh (span 2, rise 0.2, thickness 0.02, neo-Hookean
   /// E = 1000) pressed at its crown by a rigid plate moving down by half
@@ -652,22 +685,14 @@ namespace
   arch_plate(Checker &checker, const std::string &mesh)
   {
     const std::string scene =
-      subsection("Problem", entry("Dimension", "2")) +
-      subsection("Mesh", entry("Source", "file") + entry("File", mesh)) +
-      subsection("Material",
-                 entry("Model", "neo-Hookean") +
-                   entry("Young's modulus", "1000") +
-                   entry("Poisson's ratio", "0.3")) +
-      subsection("Loading", entry("Number of load steps", "10")) +
-      subsection("Newton", entry("Follow negative curvature", "true")) +
-      dirichlet(1, 1, "x, y", "0; 0") + dirichlet(2, 2, "x, y", "0; 0") +
-      subsection("Contact",
-                 subsection("Obstacle 1",
-                            entry("Type", "plane") +
-                              entry("Point", "0, 0.211") +
-                              entry("Normal", "0, -1") +
-                              entry("Motion", "0; -0.105*t"))) +
-      subsection("Output", entry("Points", "0, 0.21"));
+      plate_scene(2,
+                  mesh,
+                  dirichlet(1, 1, "x, y", "0; 0") +
+                    dirichlet(2, 2, "x, y", "0; 0"),
+                  "0, 0.211",
+                  "0, -1",
+                  "0; -0.105*t",
+                  "0, 0.21");
     std::string failure;
     const auto  steps = run_scene_text<2>(scene, failure);
     checker.is_true("arch under the plate: arrives at t = 1",
@@ -731,23 +756,14 @@ namespace
   shell_plate(Checker &checker, const std::string &mesh)
   {
     const std::string scene =
-      subsection("Problem", entry("Dimension", "3")) +
-      subsection("Mesh", entry("Source", "file") + entry("File", mesh)) +
-      subsection("Material",
-                 entry("Model", "neo-Hookean") +
-                   entry("Young's modulus", "1000") +
-                   entry("Poisson's ratio", "0.3")) +
-      subsection("Loading", entry("Number of load steps", "10")) +
-      subsection("Newton", entry("Follow negative curvature", "true")) +
-      dirichlet(1, 1, "x, y, z", "0; 0; 0") + dirichlet(2, 2, "x", "0") +
-      dirichlet(3, 3, "y", "0") +
-      subsection("Contact",
-                 subsection("Obstacle 1",
-                            entry("Type", "plane") +
-                              entry("Point", "0, 0, 1.0105") +
-                              entry("Normal", "0, 0, -1") +
-                              entry("Motion", "0; 0; -0.5*t"))) +
-      subsection("Output", entry("Points", "0, 0, 1.01"));
+      plate_scene(3,
+                  mesh,
+                  dirichlet(1, 1, "x, y, z", "0; 0; 0") +
+                    dirichlet(2, 2, "x", "0") + dirichlet(3, 3, "y", "0"),
+                  "0, 0, 1.0105",
+                  "0, 0, -1",
+                  "0; 0; -0.5*t",
+                  "0, 0, 1.01");
     std::string failure;
     const auto  steps = run_scene_text<3>(scene, failure);
     checker.is_true("hemispherical shell under the plate: arrives at t = 1",
