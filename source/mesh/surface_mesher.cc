@@ -11,6 +11,7 @@
 #include <hyperelastic/mesh/surface_mesher.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -607,34 +608,31 @@ namespace hyperelastic
                                            xyz[3 * i + 2]);
               }
           }
+        // The mesh's vertex numbers of element @p e of @p n corners.
+        const auto corner_vertices = [&](const std::vector<std::size_t> &c,
+                                         const std::size_t               e,
+                                         const unsigned int              n) {
+          std::array<unsigned int, 4> v{};
+          for (unsigned int k = 0; k < n; ++k)
+            v[k] = index.at(c[n * e + k]);
+          return v;
+        };
         long long number = 1;
         for (const int volume : volumes)
           {
             std::vector<std::size_t> elements, corners;
             gmsh::model::mesh::getElementsByType(4, elements, corners, volume);
             for (std::size_t e = 0; e < elements.size(); ++e)
-              {
-                dealii::CellData<3> cell(4);
-                for (unsigned int k = 0; k < 4; ++k)
-                  cell.vertices[k] = index.at(corners[4 * e + k]);
-                cell.material_id = 0;
-                mesh.cells.push_back(cell);
-                mesh.element_numbers.push_back(number++);
-              }
+              mesh.add_cell(corner_vertices(corners, e, 4), 0, number++);
           }
         for (const auto &[key, tag] : surface_of)
           {
             std::vector<std::size_t> elements, corners;
             gmsh::model::mesh::getElementsByType(2, elements, corners, tag);
             for (std::size_t e = 0; e < elements.size(); ++e)
-              {
-                dealii::CellData<2> face(3);
-                for (unsigned int k = 0; k < 3; ++k)
-                  face.vertices[k] = index.at(corners[3 * e + k]);
-                face.boundary_id = key.second;
-                mesh.boundary.boundary_quads.push_back(face);
-                mesh.boundary_numbers.push_back(number++);
-              }
+              mesh.add_face(corner_vertices(corners, e, 3),
+                            key.second,
+                            number++);
           }
       }
     catch (const std::string &message)
