@@ -272,31 +272,48 @@ namespace
                     1e-12);
   }
 
-  /// The viscous bar with the mixed formulation (P1/P1 stabilized): the
-  /// pressures are part of the state.
+  /// @p scene run to its end in the folder "<name>_whole", and again in
+  /// "<name>_split", killed after its third step (checkpoints every 2
+  /// steps) and resumed from its checkpoint: at least 4 steps, and every
+  /// CSV value (@p what) as without the interruption (1e-12).
   template <int dim>
   void
-  mixed(Checker &checker)
+  check_resumed(Checker           &checker,
+                const std::string &tag,
+                const std::string &scene,
+                const std::string &name,
+                const std::string &what)
   {
-    const std::string tag   = std::to_string(dim) + "D mixed, viscous: ";
-    const std::string whole = folder(dim, "mixed_whole");
-    const std::string split = folder(dim, "mixed_split");
+    const std::string whole = folder(dim, name + "_whole");
+    const std::string split = folder(dim, name + "_split");
     const std::string every =
       entry("Checkpoint every", "2") + entry("Write VTU", "false");
-    const std::string scene =
-      viscous_bar(dim) +
-      subsection("Problem",
-                 entry("Formulation", "mixed") +
-                   entry("Mixed element", "P1/P1 stabilized"));
     run<dim>(scene + output(whole, every));
     run<dim>(scene + output(split, every), "", 3);
     run<dim>(scene + output(split, every), split + "/run.checkpoint");
     checker.at_least(tag + "steps",
                      lines_of(whole + "/run.csv").size() - 1.,
                      4.);
-    checker.at_most(tag + "every CSV value as without the interruption",
+    checker.at_most(tag + what + " as without the interruption",
                     csv_difference(whole + "/run.csv", split + "/run.csv"),
                     1e-12);
+  }
+
+  /// The viscous bar with the mixed formulation (P1/P1 stabilized): the
+  /// pressures are part of the state.
+  template <int dim>
+  void
+  mixed(Checker &checker)
+  {
+    check_resumed<dim>(checker,
+                       std::to_string(dim) + "D mixed, viscous: ",
+                       viscous_bar(dim) +
+                         subsection("Problem",
+                                    entry("Formulation", "mixed") +
+                                      entry("Mixed element",
+                                            "P1/P1 stabilized")),
+                       "mixed",
+                       "every CSV value");
   }
 
   /// The viscous bar with regions: x < 1 a viscoelastic Gent of its own
@@ -307,11 +324,6 @@ namespace
   void
   regions(Checker &checker)
   {
-    const std::string tag   = std::to_string(dim) + "D regions, viscous: ";
-    const std::string whole = folder(dim, "regions_whole");
-    const std::string split = folder(dim, "regions_split");
-    const std::string every =
-      entry("Checkpoint every", "2") + entry("Write VTU", "false");
     const std::string scene =
       viscous_bar(dim) +
       subsection("Region 1",
@@ -330,16 +342,11 @@ namespace
                    subsection("Material",
                               entry("Model", "neo-Hookean") +
                                 entry("Young's modulus", "3")));
-    run<dim>(scene + output(whole, every));
-    run<dim>(scene + output(split, every), "", 3);
-    run<dim>(scene + output(split, every), split + "/run.checkpoint");
-    checker.at_least(tag + "steps",
-                     lines_of(whole + "/run.csv").size() - 1.,
-                     4.);
-    checker.at_most(tag + "every CSV value (energy_region_<k> included) "
-                          "as without the interruption",
-                    csv_difference(whole + "/run.csv", split + "/run.csv"),
-                    1e-12);
+    check_resumed<dim>(checker,
+                       std::to_string(dim) + "D regions, viscous: ",
+                       scene,
+                       "regions",
+                       "every CSV value (energy_region_<k> included)");
   }
 
   /// The message of the input error @p text restarted from @p checkpoint
