@@ -392,12 +392,7 @@ namespace
                         entry("Number of load steps", "4") +
                           entry("Constants", "a = 1.0471975511965976")) +
              dirichlet(1, 0, "x, y, z", "0; 0; 0") +
-             dirichlet(2,
-                       1,
-                       "x, y, z",
-                       "0.2*t; 0.5 + (y - 0.5)*cos(a*t) - (z - 0.5)*sin(a*t)"
-                       " - y; 0.5 + (y - 0.5)*sin(a*t) + (z - 0.5)*cos(a*t)"
-                       " - z") +
+             twisted_end("0.2*t", "a*t") +
              subsection("Linear solver", entry("AMG for contrast", contrast)) +
              subsection("Output",
                         entry("Write VTU", "false") +

@@ -123,6 +123,21 @@ namespace hyperelastic::testing
            subsection("Output", entry("Write VTU", "false"));
   }
 
+  /// 'Dirichlet 2' on boundary id 1 (the end x = const of a bar whose axis
+  /// is y = z = 0.5): the end pulled by @p pull along x and turned by
+  /// @p angle (radians) about the axis, both expressions of t.
+  inline std::string
+  twisted_end(const std::string &pull, const std::string &angle)
+  {
+    const std::string c = "cos(" + angle + ")", s = "sin(" + angle + ")";
+    return dirichlet(2,
+                     1,
+                     "x, y, z",
+                     pull + "; 0.5 + (y - 0.5)*" + c + " - (z - 0.5)*" + s +
+                       " - y; 0.5 + (y - 0.5)*" + s + " + (z - 0.5)*" + c +
+                       " - z");
+  }
+
   /// The bar clamped at x = 0, its end at x = 4 turned by 90 degrees about
   /// its axis, under gravity, in 4 load steps (append to bar_3d()).
   inline std::string
@@ -131,13 +146,7 @@ namespace hyperelastic::testing
     return subsection("Loading",
                       entry("Number of load steps", "4") +
                         entry("Body force", "0; 0; -0.05")) +
-           dirichlet(1, 0, "x, y, z", "0; 0; 0") +
-           dirichlet(2,
-                     1,
-                     "x, y, z",
-                     "0; 0.5 + (y - 0.5)*cos(pi/2*t) - (z - 0.5)*sin(pi/2*t)"
-                     " - y; 0.5 + (y - 0.5)*sin(pi/2*t) + (z - 0.5)*cos(pi/2*t)"
-                     " - z");
+           dirichlet(1, 0, "x, y, z", "0; 0; 0") + twisted_end("0", "pi/2*t");
   }
   /// Homogeneous uniaxial stretch: the bar [0,3] x [0,1] (x [0,1]) of the
   /// model @p model (its own subsection's @p model_entries) on symmetry
