@@ -224,7 +224,7 @@ namespace hyperelastic
     // comes from the mixed formulation's pressure, and mu decides).
     double smallest = std::numeric_limits<double>::infinity(), largest = 0.;
     for (unsigned int r = 0; r < materials->n_regions(); ++r)
-      if (cell_regions.n_cells.empty() || cell_regions.n_cells[r] > 0)
+      if (cell_regions.n_cells[r] > 0)
         {
           const LameParameters m = materials->model(r).small_strain_moduli();
           const double         stiffness =

@@ -70,18 +70,17 @@ namespace hyperelastic
                           LoadingParameters            &loading,
                           std::set<types::boundary_id> &mesh_ids)
   {
-    // The distinct conditions in the order of the sections, and the ids the
-    // sections name directly.
-    BoundaryRegions                  result;
-    std::set<types::boundary_id>     named_ids;
-    std::map<types::boundary_id, std::string> namer;
+    // The distinct conditions in the order of the sections.
+    BoundaryRegions result;
+    // The ids the sections name directly, each with the first section
+    // naming it.
+    std::map<types::boundary_id, std::string> named_ids;
     const auto add = [&](const std::string &condition,
                          const std::string &section,
                          const types::boundary_id id) {
       if (condition.empty())
         {
-          named_ids.insert(id);
-          namer.emplace(id, section);
+          named_ids.emplace(id, section);
           return;
         }
       auto region = std::find_if(result.regions.begin(),
@@ -106,8 +105,8 @@ namespace hyperelastic
     types::boundary_id next = 0;
     for (const types::boundary_id id : mesh_ids)
       next = std::max<types::boundary_id>(next, id + 1);
-    for (const types::boundary_id id : named_ids)
-      next = std::max<types::boundary_id>(next, id + 1);
+    for (const auto &named : named_ids)
+      next = std::max<types::boundary_id>(next, named.first + 1);
     std::vector<std::unique_ptr<FunctionParser<dim>>> condition;
     for (BoundaryRegions::Region &region : result.regions)
       {
@@ -174,7 +173,7 @@ namespace hyperelastic
           if (named_ids.count(old) > 0)
             throw InputError(
               entry_of(region) + ": the condition takes faces of boundary id " +
-              std::to_string(old) + ", which '" + namer.at(old) +
+              std::to_string(old) + ", which '" + named_ids.at(old) +
               "/Boundary id' names: a face has one boundary id (select those "
               "faces by a condition in both sections, or none by one)");
       }

@@ -128,8 +128,8 @@ namespace hyperelastic
       }
     if (saddle_point)
       saddle_point->extract_displacement_block(A);
-    if (may_reuse_aggregates && parameters.amg_reuse_aggregates && amg_built &&
-        matrix == amg_matrix)
+    // (may_reuse_aggregates: the same matrix object on every rank.)
+    if (may_reuse_aggregates && parameters.amg_reuse_aggregates && amg_built)
       {
         // The same matrix object (and, for the saddle point, the same
         // displacement block object) with new values: ML recomputes the

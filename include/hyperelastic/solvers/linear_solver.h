@@ -191,9 +191,10 @@ namespace hyperelastic
 
     /// Computes the hierarchy for @p A now: the replacement preconditioner
     /// if there is one and @p may_use_replacement; else ML, refreshed on
-    /// the aggregates of the last full build if @p may_reuse_aggregates,
-    /// the parameters allow it and the matrix is the same object; otherwise
-    /// built anew.
+    /// the aggregates of the last full build if @p may_reuse_aggregates
+    /// (the caller's verdict, the same on every rank: the matrix is the
+    /// object the hierarchy was built on) and the parameters allow it;
+    /// otherwise built anew.
     void
     build_amg(const dealii::TrilinosWrappers::SparseMatrix &A,
               bool may_reuse_aggregates,
