@@ -80,6 +80,14 @@ namespace hyperelastic
 
   template <int dim>
   void
+  EquilibriumSystem<dim>::renew_extension()
+  {
+    const MatrixType old(std::move(extension));
+    extension.reinit(tangent);
+  }
+
+  template <int dim>
+  void
   EquilibriumSystem<dim>::attach(ElasticityOperator<dim> &elasticity,
                                  TimeStepping<dim>       &stepping)
   {
@@ -206,7 +214,7 @@ namespace hyperelastic
     {
       TimerOutput::Scope scope(parts.timer, "assembly");
       VectorType         unused_rhs(rhs);
-      extension.reinit(tangent);
+      renew_extension();
       elasticity->assemble_system(u_ghosted,
                                   current_load_factor,
                                   *active_constraints,
@@ -340,7 +348,7 @@ namespace hyperelastic
       TimerOutput::Scope scope(parts.timer, "assembly");
       LameParameters     zero_poisson;
       zero_poisson.mu = parts.material.top().small_strain_moduli().mu;
-      extension.reinit(tangent);
+      renew_extension();
       assemble_rest_system(parts.dof_handler,
                            parts.mapping,
                            zero_poisson,

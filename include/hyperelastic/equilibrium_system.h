@@ -221,6 +221,13 @@ namespace hyperelastic
     /// terms' (CouplingTerm::add_couplings). Collective.
     void
     build_tangent_sparsity();
+    /// Makes `extension` a new matrix with the tangent's sparsity, built
+    /// while the old one still exists, so that it has another address and
+    /// the linear solver builds a new hierarchy on it every time. (A reinit
+    /// in place lands at the old address on some runs and not on others: a
+    /// kept hierarchy then refers to a destroyed matrix, and runs differ.)
+    void
+    renew_extension();
 
     const Parts              parts;
     const MPI_Comm           comm;

@@ -146,9 +146,13 @@ namespace hyperelastic
         // last step of 1.2e-13 would follow: issue 41).
         const double t_next =
           (t + increment > end - 1e-6 * nominal) ? end : t + increment;
+        // The increment as halved and doubled, not t_next - t: summed load
+        // factors carry round-off, and a cut-back to exactly 1/16 of the
+        // nominal increment must compare as 1/16 (snap steps, the CSV).
+        const double attempted = t_next == end ? end - t : increment;
         pcout << "\n"
               << label << " " << step.step + 1 << ": t = " << t_next
-              << " (increment " << t_next - t << ")"
+              << " (increment " << attempted << ")"
               << (snapping ? ", snap step" : "") << std::endl;
         system.set_load_factor(t_next);
         NewtonResult result;
@@ -162,7 +166,7 @@ namespace hyperelastic
           {
             system.restore_converged_state();
             easy_steps_in_a_row = 0;
-            double smaller      = 0.5 * (t_next - t);
+            double smaller      = 0.5 * attempted;
             if (snapping)
               {
                 // The snap did not work: the cut-backs go on where they
@@ -220,7 +224,7 @@ namespace hyperelastic
         snapping = false;
         step.step += 1;
         step.load_factor = t_next;
-        step.increment   = t_next - t;
+        step.increment   = attempted;
         t                = t_next;
         system.store_converged_state();
 
