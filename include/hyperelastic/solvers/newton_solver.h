@@ -297,6 +297,11 @@ namespace hyperelastic
       /// deferral); negative: to be set from the next residual; zero: no
       /// update before convergence.
       double early_lag_residual = -1.;
+      /// The lagged quantities have been updated in this solve: from then
+      /// on they are taken again after every full Newton step (a fixed
+      /// point iterated together with Newton's), not only once the
+      /// residual has fallen to early_lag_reduction of the new first one.
+      bool lag_each_iteration = false;
       /// The trust region's radius (NaN until the first trust-region
       /// iteration of the solve): kept through the load step.
       double trust_radius = std::numeric_limits<double>::quiet_NaN();
@@ -389,11 +394,14 @@ namespace hyperelastic
 
     /// Before convergence: updates the system's lagged quantities once the
     /// residual has fallen to early_lag_reduction times the first one of
-    /// the current equations (SolveState::early_lag_residual); the new
+    /// the current equations (SolveState::early_lag_residual), and, once
+    /// they have been updated in this solve, after every full step
+    /// (@p full_step: the line search accepted step length 1); the new
     /// equations get a fresh budget from @p iteration on.
     void
     update_lagged_early(NonlinearSystem     &system,
                         const ResidualNorms &norms,
+                        bool                 full_step,
                         unsigned int         iteration,
                         SolveState          &state) const;
 
