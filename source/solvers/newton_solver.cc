@@ -606,6 +606,7 @@ namespace hyperelastic
       }
 
     SolveState state;
+    state.lag_each_iteration = true;
     for (unsigned int it = 1;
          it - state.budget_start <= max_iterations;
          ++it)
