@@ -200,7 +200,8 @@ namespace
                         1e-8);
       // Lagging updates within Newton's iterations (issue 43, item 5):
       // friction costs about one solve a step, not one per update
-      // (measured 1.58 in 2D, 2.08 in 3D; each update re-solving the step
+      // (measured 1.58 in 2D, 2.08 in 3D before the normal forces followed
+      // the iterates; each update re-solving the step
       // from its converged state cost 3 to 4.6 times in
       // benchmarks/friction).
       const double with_friction = later_iterations(problem->summaries());
@@ -208,6 +209,14 @@ namespace
                             "frictionless ones",
                       with_friction / frictionless_iterations,
                       2.5);
+      // With the normal forces following Newton's iterates after each full
+      // step, the 2D block meets issue 43's target (measured 1.42; 3D
+      // 2.17, its steps 3-5 still pay a converged-state update each).
+      if (dim == 2)
+        checker.at_most(tag + "mu = 0.5: Newton iterations of steps 3-5 / "
+                              "frictionless ones (issue 43's target)",
+                        with_friction / frictionless_iterations,
+                        1.5);
     }
   }
 

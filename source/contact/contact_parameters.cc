@@ -53,8 +53,9 @@ namespace hyperelastic
       "4",
       Integer(0),
       "How many times a step may take friction's normal forces and tangent "
-      "directions again: within Newton's iterations once the residual has "
-      "fallen by 10 (a change of more than half the largest normal force "
+      "directions again: within Newton's iterations after each full step "
+      "or once the residual has fallen by 10 (a change of more than half "
+      "the largest normal force "
       "waits for a smaller residual), and at the converged state, after "
       "which Newton goes on with them. They start from the last step's, "
       "quasi-statically extrapolated from the last two steps. No update "

@@ -548,13 +548,14 @@ namespace hyperelastic
     // gained early_lag_reduction on the first residual of these equations,
     // the iterate is close enough for the normal forces: they are updated
     // there, and Newton goes on with the new equations (the convergence
-    // test still checks them once more when it passes). After that first
-    // update the normal forces follow Newton's iterates: they are taken
-    // again after each full step (the fixed point of the normal forces
-    // contracts by about a tenth an update at mu = 0.5, so waiting for
-    // the residual of each new set of equations to fall tenfold doubled
-    // the iterations an update costs). A step the line search shortened
-    // waits for the residual rule.
+    // test still checks them once more when it passes). Besides, the
+    // normal forces follow Newton's iterates from the solve's start: they
+    // are taken again after each full step (the fixed point of the normal
+    // forces contracts by about a tenth an update at mu = 0.5, so waiting
+    // for the residual of each new set of equations to fall tenfold
+    // doubled the iterations an update costs). A step the line search
+    // shortened, and an update deferred or without change, fall back to
+    // the residual rule.
     const bool follow = state.lag_each_iteration && full_step;
     if (state.early_lag_residual < 0.)
       {
@@ -606,6 +607,8 @@ namespace hyperelastic
       }
 
     SolveState state;
+    // Friction's normal forces follow the iterates from the first full
+    // step on (update_lagged_early).
     state.lag_each_iteration = true;
     for (unsigned int it = 1;
          it - state.budget_start <= max_iterations;

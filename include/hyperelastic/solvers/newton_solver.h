@@ -297,10 +297,12 @@ namespace hyperelastic
       /// deferral); negative: to be set from the next residual; zero: no
       /// update before convergence.
       double early_lag_residual = -1.;
-      /// The lagged quantities have been updated in this solve: from then
-      /// on they are taken again after every full Newton step (a fixed
-      /// point iterated together with Newton's), not only once the
-      /// residual has fallen to early_lag_reduction of the new first one.
+      /// The lagged quantities follow Newton's iterates: they are taken
+      /// again after every full Newton step (a fixed point iterated
+      /// together with Newton's), not only once the residual has fallen to
+      /// early_lag_reduction of the first one of the current equations.
+      /// Set at the start of a solve and after each update; cleared when an
+      /// update was deferred or changed nothing.
       bool lag_each_iteration = false;
       /// The trust region's radius (NaN until the first trust-region
       /// iteration of the solve): kept through the load step.
@@ -394,9 +396,9 @@ namespace hyperelastic
 
     /// Before convergence: updates the system's lagged quantities once the
     /// residual has fallen to early_lag_reduction times the first one of
-    /// the current equations (SolveState::early_lag_residual), and, once
-    /// they have been updated in this solve, after every full step
-    /// (@p full_step: the line search accepted step length 1); the new
+    /// the current equations (SolveState::early_lag_residual), and after
+    /// every full step (@p full_step: the line search accepted step length
+    /// 1) while SolveState::lag_each_iteration holds; the new
     /// equations get a fresh budget from @p iteration on.
     void
     update_lagged_early(NonlinearSystem     &system,
