@@ -12,8 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <iostream>
 
 namespace hyperelastic
 {
@@ -173,13 +171,6 @@ namespace hyperelastic
         // (the largest one: a plate pressing along its normal). A support
         // that only nearly resists counts as none.
         const double resisted = std::max(1e-6 * body.scale, 1e-2 * largest);
-        if (std::getenv("HELD_DEBUG") && Utilities::MPI::this_mpi_process(comm) == 0)
-          {
-            std::cout << "  [held] scale " << body.scale << " fs " << force_scale << " eig/scale:";
-            for (unsigned int k = 0; k < n_modes; ++k)
-              std::cout << " " << values[k] / body.scale;
-            std::cout << std::endl;
-          }
         for (unsigned int k = 0; k < n_modes; ++k)
           {
             if (!(values[k] <= resisted))
