@@ -102,7 +102,8 @@ namespace hyperelastic
           ids.insert(d.id);
         unheld = std::make_unique<UnheldRigidMotions<dim>>(parts.mapping,
                                                            parts.dof_handler,
-                                                           ids);
+                                                           ids,
+                                                           parts.frictional);
         if (unheld->empty())
           unheld.reset();
       }

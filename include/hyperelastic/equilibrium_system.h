@@ -54,6 +54,10 @@ namespace hyperelastic
       LinearSolver                  &linear_solver;
       dealii::TimerOutput           &timer;
       dealii::ConditionalOStream     pcout;
+      /// Whether a contact has friction (which resists the rigid motions
+      /// along the contact surfaces of the bodies it holds, however
+      /// weakly; see UnheldRigidMotions).
+      bool frictional = false;
     };
 
     /// The constraints, the tangent's sparsity and the vectors (u = 0).

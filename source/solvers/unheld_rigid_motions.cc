@@ -21,8 +21,10 @@ namespace hyperelastic
   UnheldRigidMotions<dim>::UnheldRigidMotions(
     const Mapping<dim>                 &mapping,
     const DoFHandler<dim>              &dof_handler,
-    const std::set<types::boundary_id> &dirichlet_ids)
-      : comm(dof_handler.get_communicator())
+    const std::set<types::boundary_id> &dirichlet_ids,
+    const bool                          frictional)
+      : frictional(frictional)
+      , comm(dof_handler.get_communicator())
       , owned(dof_handler.locally_owned_dofs())
   {
     std::vector<unsigned int>    body_of_cell;
@@ -170,10 +172,13 @@ namespace hyperelastic
         // Resisted: an eigenvalue of the order of the supports' stiffness
         // (the largest one: a plate pressing along its normal). A support
         // that only nearly resists counts as none.
-        const double resisted = std::max(1e-6 * body.scale, 1e-2 * largest);
+        const double resisted =
+          frictional ? 1e-6 * body.scale
+                     : std::max(1e-6 * body.scale, 1e-2 * largest);
         for (unsigned int k = 0; k < n_modes; ++k)
           {
-            if (!(values[k] <= resisted))
+            if (!(values[k] <= resisted) ||
+                (frictional && !(std::abs(values[k]) <= resisted)))
               continue;
             VectorType v(owned, comm);
             for (unsigned int i = 0; i < n_modes; ++i)
@@ -181,7 +186,8 @@ namespace hyperelastic
             // A net force of the size of the loads along the motion (the
             // body pushed along a tilted support) moves the body by
             // Newton's step instead.
-            if (!(std::abs(v * rhs) <= 1e-4 * force_scale))
+            if (!(std::abs(v * rhs) <=
+                  (frictional ? 1e-10 : 1e-4) * force_scale))
               continue;
             std::array<double, n_modes> c;
             for (unsigned int i = 0; i < n_modes; ++i)

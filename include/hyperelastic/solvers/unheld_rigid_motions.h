@@ -14,7 +14,8 @@
 // at the current positions, orthonormal): those whose eigenvalue is below
 // 1e-2 of the largest one (or below 1e-6 of the mean diagonal; negative
 // ones too: a motion along which the energy curves down is not held either)
-// and along which the net force is below 1e-4 of the forces' size. A
+// and along which the net force is below 1e-4 of the forces' size (with
+// friction: below 1e-6 of the mean diagonal and 1e-10 of the forces). A
 // support that only nearly resists (a block on a deformed, slightly tilted
 // face: restricted eigenvalues 1e-4 of the resisted ones, a net force 1e-7
 // of the forces) would otherwise let the body creep along a valley with no
@@ -49,10 +50,16 @@ namespace hyperelastic
   {
   public:
     /// The bodies of the mesh without a boundary face among
-    /// @p dirichlet_ids and the owned nodes of each. Collective.
+    /// @p dirichlet_ids and the owned nodes of each. With @p frictional
+    /// contact, only the motions the tangent does not resist at all
+    /// (eigenvalue below 1e-6 of the mean diagonal, a force along them
+    /// below 1e-10 of the forces' size) are pinned: friction's stiffness
+    /// along the contact surfaces, however small against the normal one,
+    /// is a support. Collective.
     UnheldRigidMotions(const dealii::Mapping<dim>                 &mapping,
                        const dealii::DoFHandler<dim>              &dof_handler,
-                       const std::set<dealii::types::boundary_id> &dirichlet_ids);
+                       const std::set<dealii::types::boundary_id> &dirichlet_ids,
+                       bool frictional = false);
 
     /// Whether the mesh has no unheld body (the same on every rank).
     bool
@@ -130,6 +137,7 @@ namespace hyperelastic
     std::vector<VectorType>
     motions(const UnheldBody &body, const VectorType &u) const;
 
+    bool                    frictional;
     MPI_Comm                comm;
     dealii::IndexSet        owned;
     std::vector<UnheldBody> bodies;
