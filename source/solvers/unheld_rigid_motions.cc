@@ -193,10 +193,50 @@ namespace hyperelastic
             for (unsigned int i = 0; i < n_modes; ++i)
               c[i] = vectors[i][k];
             body.pinned.push_back(c);
-            ++pinned;
           }
+        if (!frictional)
+          snap_to_axes(body, r, rhs, force_scale);
+        pinned += body.pinned.size();
       }
     return pinned;
+  }
+
+  template <int dim>
+  void
+  UnheldRigidMotions<dim>::snap_to_axes(UnheldBody                    &body,
+                                        const std::vector<VectorType> &r,
+                                        const VectorType              &rhs,
+                                        const double force_scale) const
+  {
+    const unsigned int m = body.pinned.size();
+    if (m == 0 || m == n_modes)
+      return;
+    // w_i = |P e_i|^2, e_i the i-th orthonormal rigid motion, P the
+    // projector on the pinned ones.
+    std::array<double, n_modes>       w{};
+    std::array<unsigned int, n_modes> order;
+    for (unsigned int i = 0; i < n_modes; ++i)
+      {
+        order[i] = i;
+        for (const auto &c : body.pinned)
+          w[i] += c[i] * c[i];
+      }
+    std::sort(order.begin(), order.end(), [&](const auto a, const auto b) {
+      return w[a] > w[b];
+    });
+    // Each of the m motions most inside the pinned span almost wholly in
+    // it (supports along the axes): those pure motions are pinned instead.
+    for (unsigned int j = 0; j < m; ++j)
+      if (!(w[order[j]] >= 0.99) ||
+          !(std::abs(r[order[j]] * rhs) <= 1e-4 * force_scale))
+        return;
+    body.pinned.clear();
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        std::array<double, n_modes> c{};
+        c[order[j]] = 1.;
+        body.pinned.push_back(c);
+      }
   }
 
   template <int dim>

@@ -129,6 +129,20 @@ namespace hyperelastic
       std::vector<std::array<double, n_rigid_body_modes<dim>>> pinned;
     };
 
+    /// Where the supports lie along the axes (each of the pinned span's
+    /// dimensions holds one of the orthonormal rigid motions @p r, the
+    /// translations along x, y, z and the rotations about them, to 0.99 of
+    /// its norm squared), pins those pure motions instead of the
+    /// eigenvectors: the tangent's couplings (a lateral force that grows
+    /// with the pressing) mix the eigenvectors slightly with the resisted
+    /// motions, so that the pins' reactions would have a small component
+    /// along them (a plate's force not quite equal to the clamp's).
+    void
+    snap_to_axes(UnheldBody                    &body,
+                 const std::vector<VectorType> &r,
+                 const VectorType              &rhs,
+                 double                         force_scale) const;
+
     /// The pinned motions of all bodies at X + u, orthonormal.
     std::vector<VectorType>
     pinned_motions(const VectorType &u) const;
