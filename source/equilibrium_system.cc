@@ -102,7 +102,8 @@ namespace hyperelastic
           ids.insert(d.id);
         unheld = std::make_unique<UnheldRigidMotions<dim>>(parts.mapping,
                                                            parts.dof_handler,
-                                                           ids);
+                                                           ids,
+                                                           parts.frictional);
         if (unheld->empty())
           unheld.reset();
       }
@@ -179,10 +180,13 @@ namespace hyperelastic
     if (properties().linear && forcing == 0.)
       tolerance = std::min(tolerance, parts.newton.relative_residual_tolerance);
     update = 0.;
+    // The pinned motions' forces are their pins' reactions: the update
+    // answers the rest of the residual.
+    const VectorType &b = unheld ? pinned_right_hand_side(rhs) : rhs;
     solve.linear_iterations +=
       parts.linear_solver.solve(tangent,
                                 update,
-                                rhs,
+                                b,
                                 tolerance,
                                 solve.watch_curvature && supports_trust_region()
                                   ? &solve.negative_curvature
@@ -192,8 +196,7 @@ namespace hyperelastic
       return;
     active_constraints->distribute(update);
     if (unheld)
-      unheld->remove_unresisted(
-        u, tangent, rhs, residual_target(), force_scale, update);
+      constrain_to_pins(tolerance, update, solve.linear_iterations);
     if (soften_predictor)
       {
         unsigned int extension_iterations = 0;
@@ -269,6 +272,32 @@ namespace hyperelastic
   }
 
   template <int dim>
+  const VectorType &
+  EquilibriumSystem<dim>::pinned_right_hand_side(const VectorType &b)
+  {
+    unheld->pin_unresisted(u, tangent, b, force_scale);
+    pinned_rhs = b;
+    unheld->project_out_pinned(u, pinned_rhs);
+    return pinned_rhs;
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::constrain_to_pins(const double  tolerance,
+                                            VectorType   &x,
+                                            unsigned int &iterations)
+  {
+    unheld->constrain_update(
+      u,
+      [&](const VectorType &v, VectorType &z) {
+        z = 0.;
+        iterations += parts.linear_solver.solve(tangent, z, v, tolerance);
+        homogeneous_constraints.distribute(z);
+      },
+      x);
+  }
+
+  template <int dim>
   void
   EquilibriumSystem<dim>::solve_linearization_in_trust_region(
     const double        forcing,
@@ -280,14 +309,16 @@ namespace hyperelastic
     TimerOutput::Scope scope(parts.timer, "linear solve");
     const double       tolerance =
       std::max(forcing, parts.linear_solver_parameters.relative_tolerance);
+    const VectorType &b = unheld ? pinned_right_hand_side(rhs) : rhs;
     const LinearSolver::TrustRegionSolve truncated =
       parts.linear_solver.solve_in_trust_region(
-        tangent, update, rhs, tolerance, radius);
+        tangent, update, b, tolerance, radius);
     solve.linear_iterations += truncated.iterations;
     active_constraints->distribute(update);
+    // The truncated CG's step stays in the trust region: the pinned
+    // components are only removed.
     if (unheld)
-      unheld->remove_unresisted(
-        u, tangent, rhs, residual_target(), force_scale, update);
+      unheld->project_out_pinned(u, update);
     step.negative_curvature = truncated.negative_curvature;
     step.on_boundary        = truncated.on_boundary;
     VectorType tangent_update(update);
@@ -474,6 +505,9 @@ namespace hyperelastic
     residual -= external_force;
     VectorType free_residual = residual;
     homogeneous_constraints.set_zero(free_residual);
+    // The pinned rigid motions' forces are their pins' reactions.
+    if (unheld)
+      unheld->project_out_pinned(u_ghosted, free_residual);
     return free_residual.l2_norm();
   }
 
@@ -628,6 +662,8 @@ namespace hyperelastic
     const ResidualNorms norms = residual_norms();
     r                         = residual;
     homogeneous_constraints.set_zero(r);
+    if (unheld)
+      unheld->project_out_pinned(u_ghosted, r);
     return norms;
   }
 
@@ -680,12 +716,17 @@ namespace hyperelastic
     TimerOutput::Scope scope(parts.timer, "linear solve");
     x                             = 0.;
     const unsigned int iterations = parts.linear_solver.solve(
-      tangent, x, b, parts.linear_solver_parameters.relative_tolerance);
+      tangent,
+      x,
+      unheld ? pinned_right_hand_side(b) : b,
+      parts.linear_solver_parameters.relative_tolerance);
     homogeneous_constraints.distribute(x);
+    unsigned int pinning_iterations = 0;
     if (unheld)
-      unheld->remove_unresisted(
-        u, tangent, b, residual_target(), force_scale, x);
-    return iterations;
+      constrain_to_pins(parts.linear_solver_parameters.relative_tolerance,
+                        x,
+                        pinning_iterations);
+    return iterations + pinning_iterations;
   }
 
   template <int dim>

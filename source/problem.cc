@@ -165,7 +165,8 @@ namespace hyperelastic
                                              *formulation,
                                              linear_solver,
                                              timer,
-                                             pcout});
+                                             pcout,
+                                             parameters.contact.has_friction()});
   }
 
   template <int dim>

@@ -54,6 +54,10 @@ namespace hyperelastic
       LinearSolver                  &linear_solver;
       dealii::TimerOutput           &timer;
       dealii::ConditionalOStream     pcout;
+      /// Whether a contact has friction (which resists the rigid motions
+      /// along the contact surfaces of the bodies it holds, however
+      /// weakly; see UnheldRigidMotions).
+      bool frictional = false;
     };
 
     /// The constraints, the tangent's sparsity and the vectors (u = 0).
@@ -217,6 +221,18 @@ namespace hyperelastic
     double
     residual_target() const;
 
+    /// Pins the unresisted rigid motions of the unheld bodies (at u, from
+    /// the tangent and the right-hand side @p b) and returns @p b without
+    /// its components along them (in pinned_rhs).
+    const VectorType &
+    pinned_right_hand_side(const VectorType &b);
+
+    /// Makes @p x, the tangent's solution for a pinned right-hand side,
+    /// the one without components along the pinned motions (the extra
+    /// solves at @p tolerance, their iterations added to @p iterations).
+    void
+    constrain_to_pins(double tolerance, VectorType &x, unsigned int &iterations);
+
     /// (Re)builds the tangent's sparsity: the mesh's couplings and the load
     /// terms' (CouplingTerm::add_couplings). Collective.
     void
@@ -259,6 +275,8 @@ namespace hyperelastic
     double     step_length         = 1.; ///< of the last evaluated trial
     /// Running maxima of the force and displacement norms (Newton's scales).
     double force_scale = 0.;
+    /// The right-hand side without the pinned motions' forces.
+    VectorType pinned_rhs;
     /// The load terms' ForceSize at the last force assembly.
     ForceSize                        force_size;
     double                           solution_size  = 0.;

@@ -3,11 +3,14 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <hyperelastic/materials/tangent_projection.h>
 #include <hyperelastic/mesh/bodies.h>
 #include <hyperelastic/solvers/unheld_rigid_motions.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace hyperelastic
@@ -18,8 +21,10 @@ namespace hyperelastic
   UnheldRigidMotions<dim>::UnheldRigidMotions(
     const Mapping<dim>                 &mapping,
     const DoFHandler<dim>              &dof_handler,
-    const std::set<types::boundary_id> &dirichlet_ids)
-      : comm(dof_handler.get_communicator())
+    const std::set<types::boundary_id> &dirichlet_ids,
+    const bool                          frictional)
+      : frictional(frictional)
+      , comm(dof_handler.get_communicator())
       , owned(dof_handler.locally_owned_dofs())
   {
     std::vector<unsigned int>    body_of_cell;
@@ -141,16 +146,15 @@ namespace hyperelastic
 
   template <int dim>
   unsigned int
-  UnheldRigidMotions<dim>::remove_unresisted(const VectorType &u,
-                                             const MatrixType &tangent,
-                                             const VectorType &rhs,
-                                             const double residual_target,
-                                             const double force_scale,
-                                             VectorType       &update) const
+  UnheldRigidMotions<dim>::pin_unresisted(const VectorType &u,
+                                          const MatrixType &tangent,
+                                          const VectorType &rhs,
+                                          const double      force_scale)
   {
-    unsigned int removed = 0;
-    for (const UnheldBody &body : bodies)
+    unsigned int pinned = 0;
+    for (UnheldBody &body : bodies)
       {
+        body.pinned.clear();
         const std::vector<VectorType> r = motions(body, u);
         // The tangent (without beta) restricted to the rigid motions.
         SmallMatrix<n_modes> S{};
@@ -164,28 +168,183 @@ namespace hyperelastic
         std::array<double, n_modes> values;
         SmallMatrix<n_modes>        vectors;
         jacobi_eigen_decomposition<n_modes>(S, values, vectors);
+        const double largest = *std::max_element(values.begin(), values.end());
+        // Resisted: an eigenvalue of the order of the supports' stiffness
+        // (the largest one: a plate pressing along its normal). A support
+        // that only nearly resists counts as none.
+        const double resisted =
+          frictional ? 1e-6 * body.scale
+                     : std::max(1e-6 * body.scale, 1e-2 * largest);
         for (unsigned int k = 0; k < n_modes; ++k)
           {
-            if (!(std::abs(values[k]) <= 1e-6 * body.scale))
+            if (!(values[k] <= resisted) ||
+                (frictional && !(std::abs(values[k]) <= resisted)))
               continue;
             VectorType v(owned, comm);
             for (unsigned int i = 0; i < n_modes; ++i)
               v.add(vectors[i][k], r[i]);
-            // A net force along the motion (a contact surface not quite
-            // flat) moves the body until it balances: Newton's step along
-            // it stays while that force exceeds a tenth of the residual
-            // target and 1e-10 of the forces' size (below, it is round-off,
-            // or would only move the body far along a motion that barely
-            // changes the energy).
-            const double vr = v * rhs;
-            if (!(std::abs(vr) <=
-                  std::max(0.1 * residual_target, 1e-10 * force_scale)))
+            // A net force of the size of the loads along the motion (the
+            // body pushed along a tilted support) moves the body by
+            // Newton's step instead.
+            if (!(std::abs(v * rhs) <=
+                  (frictional ? 1e-10 : 1e-4) * force_scale))
               continue;
-            update.add(-(v * update), v);
-            ++removed;
+            std::array<double, n_modes> c;
+            for (unsigned int i = 0; i < n_modes; ++i)
+              c[i] = vectors[i][k];
+            body.pinned.push_back(c);
+          }
+        if (!frictional)
+          snap_to_axes(body, r, rhs, force_scale);
+        pinned += body.pinned.size();
+      }
+    return pinned;
+  }
+
+  template <int dim>
+  void
+  UnheldRigidMotions<dim>::snap_to_axes(UnheldBody                    &body,
+                                        const std::vector<VectorType> &r,
+                                        const VectorType              &rhs,
+                                        const double force_scale) const
+  {
+    const unsigned int m = body.pinned.size();
+    if (m == 0 || m == n_modes)
+      return;
+    // w_i = |P e_i|^2, e_i the i-th orthonormal rigid motion, P the
+    // projector on the pinned ones.
+    std::array<double, n_modes>       w{};
+    std::array<unsigned int, n_modes> order;
+    for (unsigned int i = 0; i < n_modes; ++i)
+      {
+        order[i] = i;
+        for (const auto &c : body.pinned)
+          w[i] += c[i] * c[i];
+      }
+    std::sort(order.begin(), order.end(), [&](const auto a, const auto b) {
+      return w[a] > w[b];
+    });
+    // Each of the m motions most inside the pinned span almost wholly in
+    // it (supports along the axes): those pure motions are pinned instead.
+    for (unsigned int j = 0; j < m; ++j)
+      if (!(w[order[j]] >= 0.99) ||
+          !(std::abs(r[order[j]] * rhs) <= 1e-4 * force_scale))
+        return;
+    body.pinned.clear();
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        std::array<double, n_modes> c{};
+        c[order[j]] = 1.;
+        body.pinned.push_back(c);
+      }
+  }
+
+  template <int dim>
+  unsigned int
+  UnheldRigidMotions<dim>::n_pinned() const
+  {
+    unsigned int n = 0;
+    for (const UnheldBody &body : bodies)
+      n += body.pinned.size();
+    return n;
+  }
+
+  template <int dim>
+  std::vector<VectorType>
+  UnheldRigidMotions<dim>::pinned_motions(const VectorType &u) const
+  {
+    std::vector<VectorType> V;
+    for (const UnheldBody &body : bodies)
+      {
+        if (body.pinned.empty())
+          continue;
+        const std::vector<VectorType> r = motions(body, u);
+        for (const auto &c : body.pinned)
+          {
+            VectorType v(owned, comm);
+            for (unsigned int i = 0; i < n_modes; ++i)
+              v.add(c[i], r[i]);
+            V.push_back(std::move(v));
           }
       }
-    return removed;
+    // Orthonormal (those of one body are, up to round-off; different
+    // bodies have disjoint unknowns).
+    for (unsigned int i = 0; i < V.size(); ++i)
+      {
+        for (unsigned int j = 0; j < i; ++j)
+          V[i].add(-(V[i] * V[j]), V[j]);
+        const double norm = V[i].l2_norm();
+        if (norm > 0.)
+          V[i] /= norm;
+      }
+    return V;
+  }
+
+  template <int dim>
+  double
+  UnheldRigidMotions<dim>::project_out_pinned(const VectorType &u,
+                                              VectorType       &v) const
+  {
+    double removed = 0.;
+    for (const VectorType &p : pinned_motions(u))
+      {
+        const double c = p * v;
+        v.add(-c, p);
+        removed += c * c;
+      }
+    return std::sqrt(removed);
+  }
+
+  template <int dim>
+  void
+  UnheldRigidMotions<dim>::constrain_update(
+    const VectorType                                             &u,
+    const std::function<void(const VectorType &, VectorType &)> &solve,
+    VectorType                                                   &update) const
+  {
+    const std::vector<VectorType> V = pinned_motions(u);
+    const unsigned int            k = V.size();
+    if (k == 0)
+      return;
+    // Nothing along the pinned motions: the update is the constrained one
+    // already (a support flat to round-off, the body's energy invariant).
+    Vector<double> Vd(k);
+    double         along = 0.;
+    for (unsigned int i = 0; i < k; ++i)
+      Vd[i] = V[i] * update, along += Vd[i] * Vd[i];
+    if (std::sqrt(along) <= 1e-12 * update.l2_norm())
+      return;
+    // Z = K^{-1} V, M = V^T Z; the constrained minimizer of the quadratic
+    // model is update - Z M^{-1} V^T update (its residual lies in span V).
+    std::vector<VectorType> Z(k, VectorType(owned, comm));
+    FullMatrix<double>      M(k, k);
+    for (unsigned int j = 0; j < k; ++j)
+      {
+        solve(V[j], Z[j]);
+        for (unsigned int i = 0; i < k; ++i)
+          M(i, j) = V[i] * Z[j];
+      }
+    // M is symmetric positive definite for a tangent positive definite;
+    // where it is not invertible, the components are only removed.
+    bool invertible = true;
+    try
+      {
+        M.gauss_jordan();
+      }
+    catch (...)
+      {
+        invertible = false;
+      }
+    if (invertible)
+      {
+        Vector<double> mu(k);
+        M.vmult(mu, Vd);
+        for (unsigned int j = 0; j < k; ++j)
+          if (std::isfinite(mu[j]))
+            update.add(-mu[j], Z[j]);
+      }
+    // Exactly without components along them (the solves are inexact).
+    project_out_pinned(u, update);
   }
 
   template class UnheldRigidMotions<2>;
