@@ -41,6 +41,7 @@
 
 #include "support/box_discretisation.h"
 #include "support/dimension_main.h"
+#include "support/owned_vertices.h"
 #include "support/random_vector.h"
 #include "support/scene_run.h"
 #include "support/scene_text.h"
@@ -805,20 +806,13 @@ namespace
     contact.contact_forces(u, 1., f);
     f.compress(dealii::VectorOperation::add);
     double                                    F = 0., moment = 0.;
-    std::set<dealii::types::global_dof_index> seen;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            const auto dof = cell->vertex_dof_index(v, 1);
-            if (!dof_handler.locally_owned_dofs().is_element(dof) ||
-                !seen.insert(dof).second)
-              continue;
-            const double x =
-              cell->vertex(v)[0] + u(cell->vertex_dof_index(v, 0));
-            F += f(dof);
-            moment += x * x * f(dof);
-          }
+    testing::for_each_owned_vertex(
+      dof_handler, [&](const auto &cell, const unsigned int v) {
+        const auto   dof = cell->vertex_dof_index(v, 1);
+        const double x   = cell->vertex(v)[0] + u(cell->vertex_dof_index(v, 0));
+        F += f(dof);
+        moment += x * x * f(dof);
+      });
     F                   = sum(F, MPI_COMM_WORLD);
     moment              = sum(moment, MPI_COMM_WORLD);
     const double E_star = 1. / (1. - 0.09);
@@ -900,27 +894,21 @@ namespace
     // axis, the depression at the origin, the vertices in contact (vertex
     // force above 1e-3 of the largest) and the largest radius among them.
     double F = 0., moment = 0., delta = 0., largest = 0.;
-    std::set<dealii::types::global_dof_index> seen;
-    std::vector<std::pair<double, double>>    radius_force;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            const auto dof = cell->vertex_dof_index(v, 2);
-            if (!dof_handler.locally_owned_dofs().is_element(dof) ||
-                !seen.insert(dof).second)
-              continue;
-            if (cell->vertex(v).norm() < 1e-12)
-              delta = -u(dof);
-            const double x = cell->vertex(v)[0] + u(cell->vertex_dof_index(v, 0));
-            const double y = cell->vertex(v)[1] + u(cell->vertex_dof_index(v, 1));
-            const double fz = -f(dof); // the sphere pushes down
-            F += fz;
-            moment += (x * x + y * y) * fz;
-            if (fz != 0.)
-              radius_force.emplace_back(std::sqrt(x * x + y * y), fz);
-            largest = std::max(largest, fz);
-          }
+    std::vector<std::pair<double, double>> radius_force;
+    testing::for_each_owned_vertex(
+      dof_handler, [&](const auto &cell, const unsigned int v) {
+        const auto dof = cell->vertex_dof_index(v, 2);
+        if (cell->vertex(v).norm() < 1e-12)
+          delta = -u(dof);
+        const double x  = cell->vertex(v)[0] + u(cell->vertex_dof_index(v, 0));
+        const double y  = cell->vertex(v)[1] + u(cell->vertex_dof_index(v, 1));
+        const double fz = -f(dof); // the sphere pushes down
+        F += fz;
+        moment += (x * x + y * y) * fz;
+        if (fz != 0.)
+          radius_force.emplace_back(std::sqrt(x * x + y * y), fz);
+        largest = std::max(largest, fz);
+      });
     F       = 4. * sum(F, MPI_COMM_WORLD);
     moment  = 4. * sum(moment, MPI_COMM_WORLD);
     delta   = sum(delta, MPI_COMM_WORLD);

@@ -31,6 +31,7 @@
 
 #include "support/analytic_bar.h"
 #include "support/dimension_main.h"
+#include "support/owned_vertices.h"
 #include "support/scene_run.h"
 #include "support/scene_text.h"
 #include "support/summary_columns.h"
@@ -101,25 +102,18 @@ namespace
     const auto &u           = problem.solution();
     std::array<double, dim + 1> sums{};
     double                      count = 0., inertia = 0.;
-    std::set<dealii::types::global_dof_index> seen;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            const auto first = cell->vertex_dof_index(v, 0);
-            if (!dof_handler.locally_owned_dofs().is_element(first) ||
-                !seen.insert(first).second)
-              continue;
-            const dealii::Point<dim> X = cell->vertex(v);
-            double                   ux[dim];
-            for (unsigned int d = 0; d < dim; ++d)
-              ux[d] = u(cell->vertex_dof_index(v, d)), sums[d] += ux[d];
-            // About the block's centre (0.5, 0.5): (X - c) x u.
-            const double x = X[0] - 0.5, y = X[1] - 0.5;
-            sums[dim] += x * ux[1] - y * ux[0];
-            inertia += x * x + y * y;
-            count += 1.;
-          }
+    testing::for_each_owned_vertex(
+      dof_handler, [&](const auto &cell, const unsigned int v) {
+        const dealii::Point<dim> X = cell->vertex(v);
+        double                   ux[dim];
+        for (unsigned int d = 0; d < dim; ++d)
+          ux[d] = u(cell->vertex_dof_index(v, d)), sums[d] += ux[d];
+        // About the block's centre (0.5, 0.5): (X - c) x u.
+        const double x = X[0] - 0.5, y = X[1] - 0.5;
+        sums[dim] += x * ux[1] - y * ux[0];
+        inertia += x * x + y * y;
+        count += 1.;
+      });
     count   = dealii::Utilities::MPI::sum(count, MPI_COMM_WORLD);
     inertia = dealii::Utilities::MPI::sum(inertia, MPI_COMM_WORLD);
     for (unsigned int d = 0; d <= dim; ++d)
@@ -282,26 +276,19 @@ namespace
     const auto          &dof_handler = problem.get_dof_handler();
     const auto          &u           = problem.solution();
     dealii::Tensor<1, 3> moment, inertia;
-    std::set<dealii::types::global_dof_index> seen;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
+    testing::for_each_owned_vertex(
+      dof_handler, [&](const auto &cell, const unsigned int v) {
+        const dealii::Tensor<1, 3> x = cell->vertex(v) - centre;
+        dealii::Tensor<1, 3>       d;
+        for (unsigned int c = 0; c < 3; ++c)
+          d[c] = u(cell->vertex_dof_index(v, c));
+        const dealii::Tensor<1, 3> m = dealii::cross_product_3d(x, d);
+        for (unsigned int k = 0; k < 3; ++k)
           {
-            const auto first = cell->vertex_dof_index(v, 0);
-            if (!dof_handler.locally_owned_dofs().is_element(first) ||
-                !seen.insert(first).second)
-              continue;
-            const dealii::Tensor<1, 3> x = cell->vertex(v) - centre;
-            dealii::Tensor<1, 3>       d;
-            for (unsigned int c = 0; c < 3; ++c)
-              d[c] = u(cell->vertex_dof_index(v, c));
-            const dealii::Tensor<1, 3> m = dealii::cross_product_3d(x, d);
-            for (unsigned int k = 0; k < 3; ++k)
-              {
-                moment[k] += m[k];
-                inertia[k] += x.norm_square() - x[k] * x[k];
-              }
+            moment[k] += m[k];
+            inertia[k] += x.norm_square() - x[k] * x[k];
           }
+      });
     dealii::Tensor<1, 3> rotation;
     for (unsigned int k = 0; k < 3; ++k)
       rotation[k] = dealii::Utilities::MPI::sum(moment[k], MPI_COMM_WORLD) /

@@ -40,6 +40,7 @@
 #include <hyperelastic/mesh/mesh_distribution.h>
 
 #include "support/checker.h"
+#include "support/owned_vertices.h"
 #include "support/scene_run.h"
 #include "support/scene_text.h"
 #include "support/summary_columns.h"
@@ -303,20 +304,13 @@ namespace
     self.contact_forces(problem->solution(), 1., forces);
     forces.compress(VectorOperation::add);
     Tensor<1, dim>                    lower, upper;
-    std::set<types::global_dof_index> seen;
-    for (const auto &cell : dh.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            const types::global_dof_index first = cell->vertex_dof_index(v, 0);
-            if (!dh.locally_owned_dofs().is_element(first) ||
-                !seen.insert(first).second)
-              continue;
-            Tensor<1, dim> f;
-            for (unsigned int d = 0; d < dim; ++d)
-              f[d] = forces(cell->vertex_dof_index(v, d));
-            (cell->vertex(v)[dim - 1] > 0.51 ? upper : lower) += f;
-          }
+    testing::for_each_owned_vertex(
+      dh, [&](const auto &cell, const unsigned int v) {
+        Tensor<1, dim> f;
+        for (unsigned int d = 0; d < dim; ++d)
+          f[d] = forces(cell->vertex_dof_index(v, d));
+        (cell->vertex(v)[dim - 1] > 0.51 ? upper : lower) += f;
+      });
     lower = Utilities::MPI::sum(lower, MPI_COMM_WORLD);
     upper = Utilities::MPI::sum(upper, MPI_COMM_WORLD);
     Tensor<1, dim> reaction;
