@@ -17,6 +17,24 @@ namespace hyperelastic
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// Modified Gram-Schmidt with global dot products (collective); a
+    /// vector of zero norm stays zero.
+    void
+    orthonormalize(std::vector<VectorType> &vectors)
+    {
+      for (unsigned int i = 0; i < vectors.size(); ++i)
+        {
+          for (unsigned int j = 0; j < i; ++j)
+            vectors[i].add(-(vectors[i] * vectors[j]), vectors[j]);
+          const double norm = vectors[i].l2_norm();
+          if (norm > 0.)
+            vectors[i] /= norm;
+        }
+    }
+  } // namespace
+
   template <int dim>
   UnheldRigidMotions<dim>::UnheldRigidMotions(
     const Mapping<dim>                 &mapping,
@@ -131,16 +149,9 @@ namespace hyperelastic
               r[3 + k](node.dofs[b]) = x[a];
             }
       }
-    // Modified Gram-Schmidt (global dot products).
-    for (unsigned int i = 0; i < n_modes; ++i)
-      {
-        r[i].compress(VectorOperation::insert);
-        for (unsigned int j = 0; j < i; ++j)
-          r[i].add(-(r[i] * r[j]), r[j]);
-        const double norm = r[i].l2_norm();
-        if (norm > 0.)
-          r[i] /= norm;
-      }
+    for (VectorType &v : r)
+      v.compress(VectorOperation::insert);
+    orthonormalize(r);
     return r;
   }
 
@@ -269,14 +280,7 @@ namespace hyperelastic
       }
     // Orthonormal (those of one body are, up to round-off; different
     // bodies have disjoint unknowns).
-    for (unsigned int i = 0; i < V.size(); ++i)
-      {
-        for (unsigned int j = 0; j < i; ++j)
-          V[i].add(-(V[i] * V[j]), V[j]);
-        const double norm = V[i].l2_norm();
-        if (norm > 0.)
-          V[i] /= norm;
-      }
+    orthonormalize(V);
     return V;
   }
 
