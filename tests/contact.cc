@@ -29,11 +29,9 @@
 //               half-space block (quarter model): the force against 4/3 E*
 //               sqrt(R) delta^1.5 (relative TOLERANCE, default 5 %) and the
 //               contact radius against sqrt(R delta) (5 %), elements of
-//               DEGREE (default 1); MESH: meshes/hertz_block_3d.msh (P1 too
-//               stiff there by 7.7 %: the ctest asks 10 %;
-//               benchmarks/contact/hertz_3d.sh runs finer meshes of the
-//               same .geo at 5 %; P2 on this mesh: 2.3 %, radius 1.4 %, in
-//               about 3 minutes).
+//               DEGREE (default 1); MESH: meshes/hertz_block_3d.msh (P1:
+//               force +3.5 %, radius -1.0 %; benchmarks/contact/hertz_3d.sh
+//               runs other gradings of the same .geo).
 // Usage: mpirun -np N contact CASE DIM [MESH]
 #include <deal.II/base/mpi.h>
 
@@ -834,8 +832,8 @@ namespace
 
   /// Hertz in 3D: a rigid sphere of radius R = 0.1 (Contact/Obstacle 1)
   /// pressed into the quarter block [0, 1]^2 x [-1, 0] of
-  /// meshes/hertz_block_3d.msh (tetrahedra of 0.0012 within 0.015 of the
-  /// origin, growing with the distance to 0.25), rollers on its symmetry
+  /// meshes/hertz_block_3d.msh (tetrahedra of 0.002 within 0.03 of the
+  /// origin, growing with slope 0.12 to 0.25), rollers on its symmetry
   /// planes x = 0, y = 0 and its bottom; neo-Hookean E = 1, nu = 0.3. The
   /// sphere starts d_hat / 2 above the top and moves down by @p push; the
   /// indentation delta is the depression of the top at the axis, -u_z at
