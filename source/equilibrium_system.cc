@@ -97,13 +97,11 @@ namespace hyperelastic
     // (the supports check let them through only then).
     if (stepping.needs_supports())
       {
-        std::set<types::boundary_id> ids;
-        for (const auto &d : parts.boundary_conditions.dirichlet)
-          ids.insert(d.id);
-        unheld = std::make_unique<UnheldRigidMotions<dim>>(parts.mapping,
-                                                           parts.dof_handler,
-                                                           ids,
-                                                           parts.frictional);
+        unheld = std::make_unique<UnheldRigidMotions<dim>>(
+          parts.mapping,
+          parts.dof_handler,
+          parts.boundary_conditions.dirichlet_ids(),
+          parts.frictional);
         if (unheld->empty())
           unheld.reset();
       }

@@ -199,15 +199,10 @@ namespace hyperelastic
     if (contact_reporter)
       reporters.push_back(contact_reporter.get());
     if (stepping->needs_supports())
-      {
-        std::set<types::boundary_id> ids;
-        for (const auto &d : boundary_conditions->dirichlet)
-          ids.insert(d.id);
-        check_supports(dof_handler,
-                       ids,
-                       contact_reporter != nullptr,
-                       LoadingParameters::max_dirichlet);
-      }
+      check_supports(dof_handler,
+                     boundary_conditions->dirichlet_ids(),
+                     contact_reporter != nullptr,
+                     LoadingParameters::max_dirichlet);
     stepping->initialize(system->solution());
     system->attach(*elasticity, *stepping);
     // A load without a potential makes the tangent non-symmetric.

@@ -68,6 +68,17 @@ namespace hyperelastic
     BoundaryConditions(const LoadingParameters     &loading,
                        const std::set<boundary_id> &mesh_ids);
 
+    /// The boundary ids some Dirichlet condition holds (the bodies touching
+    /// none are held by contact only, quasi-statically).
+    std::set<boundary_id>
+    dirichlet_ids() const
+    {
+      std::set<boundary_id> ids;
+      for (const auto &d : dirichlet)
+        ids.insert(d.id);
+      return ids;
+    }
+
     /// Constraints u = g(x, t) - @p current on the Dirichlet dofs (the
     /// increment that takes the current displacement to the prescribed one),
     /// or homogeneous ones if @p homogeneous.
