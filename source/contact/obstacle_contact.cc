@@ -472,7 +472,7 @@ namespace hyperelastic
             if (!(s.norm() > eps))
               continue;
             const Tensor<1, dim> along = s / s.norm();
-            const double         back = slip(a, x_next, where[k], l) * along;
+            const double         back  = slip(a, x_next, where[k], l) * along;
             // Only a jump across the whole stick zone: a trial that ends
             // within it is left alone (a sharp test at zero would let the
             // Krylov solves' round-off decide, and the number of ranks).

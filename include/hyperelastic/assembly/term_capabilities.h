@@ -72,10 +72,11 @@ namespace hyperelastic
     /// for one vertex's sake; dofs that @p constraints constrain are left
     /// alone. Collective; nothing by default.
     virtual void
-    project_trial(const VectorType & /*u*/,
-                  VectorType & /*trial*/,
-                  double /*t*/,
-                  const dealii::AffineConstraints<double> & /*constraints*/) const
+    project_trial(
+      const VectorType & /*u*/,
+      VectorType & /*trial*/,
+      double /*t*/,
+      const dealii::AffineConstraints<double> & /*constraints*/) const
     {}
   };
 

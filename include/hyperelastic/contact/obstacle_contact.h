@@ -150,18 +150,20 @@ namespace hyperelastic
     void
     extrapolate_lagged(const VectorType &u_before, double t_before) override;
     /// Friction: a sliding pair (slip beyond eps at @p u) whose slip the
-    /// trial @p trial reverses is moved back to zero slip along its old
-    /// direction (not a vertex with a constrained dof). Its exact tangent has no curvature along the slip, so
-    /// where its force must fall back into the stick zone (normal forces
-    /// that grew under it) Newton's step jumps across that zone onto the
-    /// opposite slide, whose energy the line search refuses: every vertex's
-    /// step was then shortened for that one pair's sake.
+    /// trial @p trial carries back by more than eps (across the whole
+    /// stick zone) is moved back to zero slip along its old direction (not
+    /// a vertex with a constrained dof). Its exact tangent has no
+    /// curvature along the slip, so where its force must fall back into
+    /// the stick zone (normal forces that grew under it) Newton's step
+    /// jumps across that zone onto the opposite slide, whose energy the
+    /// line search refuses: every vertex's step was then shortened for
+    /// that one pair's sake.
     void
-    project_trial(const VectorType                        &u,
-                  VectorType                              &trial,
-                  double                                   t,
-                  const dealii::AffineConstraints<double> &constraints)
-      const override;
+    project_trial(
+      const VectorType                        &u,
+      VectorType                              &trial,
+      double                                   t,
+      const dealii::AffineConstraints<double> &constraints) const override;
 
     /// The force each obstacle exerts on the body (columns
     /// contact_force_<k>_<axis>), the smallest distance and the active
