@@ -156,7 +156,8 @@ namespace hyperelastic
                                 projection);
     if (unheld)
       unheld->regularize(tangent);
-    return moves_constraints || moves_terms;
+    predictor_linearization = moves_constraints || moves_terms;
+    return predictor_linearization;
   }
 
   template <int dim>
@@ -423,6 +424,14 @@ namespace hyperelastic
     TimerOutput::Scope scope(parts.timer, "line search");
     trial = u;
     trial.add(alpha, update);
+    // Along a Newton direction (not a predictor's, whose obstacles and
+    // prescribed values move with it), the terms may project the trial
+    // (lagged friction: no slip reversed across its stick zone).
+    if (alpha > 0. && !predictor_linearization)
+      elasticity->project_trial(u,
+                                trial,
+                                current_load_factor,
+                                *active_constraints);
     u_ghosted   = trial;
     step_length = alpha;
 

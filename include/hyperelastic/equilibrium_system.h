@@ -267,12 +267,16 @@ namespace hyperelastic
     /// (empty until first needed).
     MatrixType extension;
     /// u: the current iterate; update: Newton's direction; trial: the
-    /// line search's candidate u + alpha update; u_ghosted: whichever of u
+    /// line search's candidate u + alpha update (projected by the terms,
+    /// ElasticityOperator::project_trial); u_ghosted: whichever of u
     /// and trial was evaluated last, with ghost entries.
     VectorType u, u_ghosted, update, trial, rhs;
     VectorType internal_force, external_force, residual;
     double     current_load_factor = 0.;
     double     step_length         = 1.; ///< of the last evaluated trial
+    /// Whether the last linearization was a predictor (prescribed values
+    /// or obstacles moving with its direction).
+    bool predictor_linearization = false;
     /// Running maxima of the force and displacement norms (Newton's scales).
     double force_scale = 0.;
     /// The right-hand side without the pinned motions' forces.

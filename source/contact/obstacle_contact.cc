@@ -407,15 +407,7 @@ namespace hyperelastic
     const double  lambda = l.normal_force_after(since_start);
     if (!(lambda > 0.))
       return state;
-    // The slip of the step relative to the obstacle, in the lagged tangent
-    // plane: the obstacle's point under the vertex's start has moved by
-    // the shift and, turning, by (turn - I) (x_start - its start point).
-    Tensor<1, dim> w = o.shift;
-    if (o.turns)
-      w += (o.turn - unit_symmetric_tensor<dim>()) *
-           (start_positions[a] - o.start_point);
-    const Tensor<1, dim> s =
-      l.tangent_projection * (x - start_positions[a] - w);
+    const Tensor<1, dim>   s  = slip(a, x, o, l);
     const SmoothedFriction f  = smoothed_friction(s.norm(), eps);
     const double           ml = o.friction * lambda;
     state.energy += ml * f.f0;
@@ -424,6 +416,83 @@ namespace hyperelastic
       state.stiffness += ml * (f.f1_over_y * l.tangent_projection +
                                f.c * symmetrize(outer_product(s, s)));
     return state;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ObstacleContact<dim>::slip(const unsigned int a,
+                             const Point<dim>  &x,
+                             const Placed      &o,
+                             const Lagged      &l) const
+  {
+    // The slip of the step relative to the obstacle, in the lagged tangent
+    // plane: the obstacle's point under the vertex's start has moved by
+    // the shift and, turning, by (turn - I) (x_start - its start point).
+    Tensor<1, dim> w = o.shift;
+    if (o.turns)
+      w += (o.turn - unit_symmetric_tensor<dim>()) *
+           (start_positions[a] - o.start_point);
+    return l.tangent_projection * (x - start_positions[a] - w);
+  }
+
+  template <int dim>
+  void
+  ObstacleContact<dim>::project_trial(
+    const VectorType                &u,
+    VectorType                      &trial,
+    const double                     t,
+    const AffineConstraints<double> &constraints) const
+  {
+    if (lagged.empty() || !has_friction())
+      return;
+    const auto                scope = timed_section(timer, "contact");
+    const std::vector<Placed> where = placed(obstacle_time(t));
+    const double              eps =
+      friction_smoothing(end_time(t) - std::min(step_start, t));
+    const double                         since_start = elapsed(t);
+    std::vector<types::global_dof_index> rows;
+    std::vector<double>                  values;
+    for (unsigned int a = 0; a < vertices.size(); ++a)
+      {
+        if (std::any_of(vertices[a].dofs.begin(),
+                        vertices[a].dofs.end(),
+                        [&](const types::global_dof_index i) {
+                          return constraints.is_constrained(i);
+                        }))
+          continue;
+        const Point<dim> x      = position(a, u);
+        const Point<dim> x_next = position(a, trial);
+        for (unsigned int k = 0; k < obstacles.size(); ++k)
+          {
+            const Lagged &l = lagged[a * obstacles.size() + k];
+            if (!(obstacles[k].friction > 0.) ||
+                !(l.normal_force_after(since_start) > 0.))
+              continue;
+            const Tensor<1, dim> s = slip(a, x, where[k], l);
+            if (!(s.norm() > eps))
+              continue;
+            const Tensor<1, dim> along = s / s.norm();
+            const double         back  = slip(a, x_next, where[k], l) * along;
+            // Only a jump across the whole stick zone: a trial that ends
+            // within it is left alone (a sharp test at zero would let the
+            // Krylov solves' round-off decide, and the number of ranks).
+            if (!(back < -eps))
+              continue;
+            // Onto the kink: the slip's component along its old direction
+            // back to zero (in the solved state: divided by the end-state
+            // map's factor).
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                rows.push_back(vertices[a].dofs[d]);
+                values.push_back(trial(vertices[a].dofs[d]) -
+                                 back * along[d] / end_state.c);
+              }
+            break;
+          }
+      }
+    // Collective, with or without moved vertices here.
+    trial.set(rows, values);
+    trial.compress(VectorOperation::insert);
   }
 
   template <int dim>

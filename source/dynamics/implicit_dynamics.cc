@@ -193,7 +193,15 @@ namespace hyperelastic
         return;
       }
     if (context.contact.active())
-      context.elasticity.advance(1., solved);
+      {
+        context.elasticity.advance(1., solved);
+        // Obstacle friction's normal forces and tangents are taken at the
+        // guess rather than at u_n: Newton starts there, and fewer updates
+        // follow (self contact keeps those of u_n).
+        context.elasticity.update_lagged(u_ghosted,
+                                         solved,
+                                         LagMoment::predicted);
+      }
   }
 
   template <int dim>

@@ -554,8 +554,8 @@ namespace hyperelastic
     // forces contracts by about a tenth an update at mu = 0.5, so waiting
     // for the residual of each new set of equations to fall tenfold
     // doubled the iterations an update costs). A step the line search
-    // shortened, and an update deferred or without change, fall back to
-    // the residual rule.
+    // shortened, and an update without change, fall back to the residual
+    // rule.
     const bool follow = state.lag_each_iteration && full_step;
     if (state.early_lag_residual < 0.)
       {
@@ -569,12 +569,6 @@ namespace hyperelastic
     if (outcome == LaggedUpdate::unchanged)
       {
         state.early_lag_residual = 0.;
-        state.lag_each_iteration = false;
-        return;
-      }
-    if (outcome == LaggedUpdate::deferred)
-      {
-        state.early_lag_residual *= early_lag_reduction;
         state.lag_each_iteration = false;
         return;
       }

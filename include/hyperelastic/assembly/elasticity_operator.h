@@ -182,7 +182,8 @@ namespace hyperelastic
     }
 
     /// The stepped terms' hooks (SteppedTerm::begin_step,
-    /// extrapolate_lagged, set_end_state_map, update_lagged), each over
+    /// extrapolate_lagged, set_end_state_map, project_trial,
+    /// update_lagged), each over
     /// all such terms.
     /// Collective.
     void
@@ -202,6 +203,15 @@ namespace hyperelastic
     {
       for (SteppedTerm<dim> *term : stepped_terms)
         term->set_end_state_map(c, weight);
+    }
+    void
+    project_trial(const VectorType                        &u,
+                  VectorType                              &trial,
+                  const double                             t,
+                  const dealii::AffineConstraints<double> &constraints) const
+    {
+      for (const SteppedTerm<dim> *term : stepped_terms)
+        term->project_trial(u, trial, t, constraints);
     }
     LaggedUpdate
     update_lagged(const VectorType &u, const double t, const LagMoment moment)

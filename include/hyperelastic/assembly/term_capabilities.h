@@ -12,6 +12,7 @@
 // have it.
 #pragma once
 
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <hyperelastic/base/lagged_update.h>
@@ -43,11 +44,11 @@ namespace hyperelastic
     virtual void
     set_end_state_map(double c, double weight) = 0;
 
-    /// At the iterate @p u (ghosted), converged or not (@p moment): updates
-    /// the quantities the term lags behind the iterate (friction's normal
-    /// forces and tangents); returns whether they changed enough that
-    /// Newton must go on with them (updated), too little to matter, or too
-    /// much to be taken before convergence (deferred; see FrictionLagging).
+    /// At the iterate @p u (ghosted), converged, within the solve or the
+    /// step's predicted start (@p moment): updates the quantities the term
+    /// lags behind the iterate (friction's normal forces and tangents);
+    /// returns whether they changed enough that Newton must go on with
+    /// them (updated) or too little to matter (see FrictionLagging).
     /// Collective.
     virtual LaggedUpdate
     update_lagged(const VectorType &u, double t, LagMoment moment) = 0;
@@ -60,6 +61,22 @@ namespace hyperelastic
     /// updates. Collective; nothing by default.
     virtual void
     extrapolate_lagged(const VectorType & /*u_before*/, double /*t_before*/)
+    {}
+
+    /// A trial point @p trial of Newton's line search from the iterate
+    /// @p u (owned entries). A term whose potential has a kink that the
+    /// step jumps over may move the trial back onto the kink (lagged
+    /// friction: a sliding vertex whose slip the step reverses stops where
+    /// the slip along its old direction is zero), so that the line search
+    /// follows a projected path instead of shortening every vertex's step
+    /// for one vertex's sake; dofs that @p constraints constrain are left
+    /// alone. Collective; nothing by default.
+    virtual void
+    project_trial(
+      const VectorType & /*u*/,
+      VectorType & /*trial*/,
+      double /*t*/,
+      const dealii::AffineConstraints<double> & /*constraints*/) const
     {}
   };
 

@@ -8,28 +8,26 @@ namespace hyperelastic
   /// When lagged quantities are taken again.
   enum class LagMoment
   {
-    converged,   ///< at a converged state of the current equations
-    within_solve ///< before convergence, once the residual is small
+    converged,    ///< at a converged state of the current equations
+    within_solve, ///< before convergence, at a Newton iterate
+    predicted     ///< at the step's first iterate, a prediction of its
+                  ///< answer (the dynamics guess; obstacle friction only)
   };
 
   /// The outcome of an update of lagged quantities.
   enum class LaggedUpdate
   {
     unchanged, ///< they changed too little to matter (or may not change)
-    updated,   ///< they changed: the equations are new
-    deferred   ///< within a solve: they would change too much for an
-               ///< iterate that has not converged; ask again later
+    updated    ///< they changed: the equations are new
   };
 
   /// The combined outcome of several terms' updates: updated if any
-  /// updated, else deferred if any deferred, else unchanged.
+  /// updated, else unchanged.
   inline LaggedUpdate
   combine(const LaggedUpdate a, const LaggedUpdate b)
   {
     if (a == LaggedUpdate::updated || b == LaggedUpdate::updated)
       return LaggedUpdate::updated;
-    if (a == LaggedUpdate::deferred || b == LaggedUpdate::deferred)
-      return LaggedUpdate::deferred;
     return LaggedUpdate::unchanged;
   }
 } // namespace hyperelastic

@@ -1,11 +1,12 @@
 // Lagged friction's update rule, shared by the contact terms: the normal
-// forces are taken again at a converged state, and, before convergence, once
-// Newton's residual is small (NewtonSolver::update_lagged_early); if one
-// changed by more than 1e-3 of the largest, Newton goes on with them, at most
-// 'Friction lagging updates' times a step. Before convergence a change of
-// more than a tenth of the largest is deferred: the iterate is still too far
-// from the answer for its normal forces (an impact's first iterates press
-// vertices deep into the barrier).
+// forces are taken again within Newton's iterations
+// (NewtonSolver::update_lagged_early), at a converged state, and in
+// dynamics at the step's guess; if one changed by more than 1e-3 of the
+// largest, Newton goes on with them. A step takes at most 'Friction lagging
+// updates' of them, and besides as many large ones (a change of more than
+// half the largest normal force: the first iterates of a first contact or
+// an impact), so that those do not use up the updates the answer's
+// accuracy needs; the guess's own update is not counted.
 #pragma once
 
 #include <deal.II/base/mpi.h>
@@ -28,7 +29,8 @@ namespace hyperelastic
     void
     begin_step()
     {
-      updates = 0;
+      updates       = 0;
+      large_updates = 0;
     }
 
     /// Whether this step may still update its lagged quantities.
@@ -41,8 +43,7 @@ namespace hyperelastic
     /// The largest change of a normal force on this rank and the largest
     /// normal force, taken at @p moment: whether the change (over all
     /// ranks) calls for going on with the new ones (updated; the update is
-    /// counted), is too small to matter (unchanged) or too large for an
-    /// iterate before convergence (deferred). Collective.
+    /// counted) or is too small to matter (unchanged). Collective.
     LaggedUpdate
     decide(double change, double largest, const LagMoment moment, const MPI_Comm comm)
     {
@@ -50,9 +51,12 @@ namespace hyperelastic
       largest = dealii::Utilities::MPI::max(largest, comm);
       if (!(change > 1e-3 * largest))
         return LaggedUpdate::unchanged;
-      if (moment == LagMoment::within_solve && change > 0.5 * largest)
-        return LaggedUpdate::deferred;
-      ++updates;
+      if (moment == LagMoment::predicted)
+        return LaggedUpdate::updated;
+      if (change > 0.5 * largest && large_updates < max_updates)
+        ++large_updates;
+      else
+        ++updates;
       return LaggedUpdate::updated;
     }
 
@@ -74,6 +78,7 @@ namespace hyperelastic
 
   private:
     const unsigned int max_updates;
-    unsigned int       updates = 0;
+    unsigned int       updates       = 0;
+    unsigned int       large_updates = 0;
   };
 } // namespace hyperelastic

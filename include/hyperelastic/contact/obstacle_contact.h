@@ -149,6 +149,21 @@ namespace hyperelastic
     /// where both are positive, until the first update replaces them.
     void
     extrapolate_lagged(const VectorType &u_before, double t_before) override;
+    /// Friction: a sliding pair (slip beyond eps at @p u) whose slip the
+    /// trial @p trial carries back by more than eps (across the whole
+    /// stick zone) is moved back to zero slip along its old direction (not
+    /// a vertex with a constrained dof). Its exact tangent has no
+    /// curvature along the slip, so where its force must fall back into
+    /// the stick zone (normal forces that grew under it) Newton's step
+    /// jumps across that zone onto the opposite slide, whose energy the
+    /// line search refuses: every vertex's step was then shortened for
+    /// that one pair's sake.
+    void
+    project_trial(
+      const VectorType                        &u,
+      VectorType                              &trial,
+      double                                   t,
+      const dealii::AffineConstraints<double> &constraints) const override;
 
     /// The force each obstacle exerts on the body (columns
     /// contact_force_<k>_<axis>), the smallest distance and the active
@@ -292,6 +307,14 @@ namespace hyperelastic
       dealii::Tensor<1, dim>          force;
       dealii::SymmetricTensor<2, dim> stiffness;
     };
+
+    /// The slip of vertex @p a at @p x relative to obstacle @p o since the
+    /// step's start, in the tangent plane of @p l.
+    dealii::Tensor<1, dim>
+    slip(unsigned int              a,
+         const dealii::Point<dim> &x,
+         const Placed             &o,
+         const Lagged             &l) const;
 
     /// Vertex @p a at @p x against obstacle @p k placed at @p o; the
     /// stiffness only if @p with_stiffness. Friction's eps: @p eps; the

@@ -228,8 +228,7 @@ namespace hyperelastic
     /// Before convergence, once the residual is small: updates the lagged
     /// quantities at the current iterate as judge_converged_state() would;
     /// returns whether they changed (updated: the energy of the current
-    /// iterate is new), changed too little, or would change too much for an
-    /// iterate before convergence (deferred). Nothing changes by default.
+    /// iterate is new) or changed too little. Nothing changes by default.
     virtual LaggedUpdate
     update_lagged()
     {
@@ -293,16 +292,15 @@ namespace hyperelastic
       unsigned int budget_start = 0;
       /// Lagged quantities are updated within the solve once the residual
       /// is below this (a fraction of the first residual after the step's
-      /// predictor or after the last update, a further fraction after each
-      /// deferral); negative: to be set from the next residual; zero: no
-      /// update before convergence.
+      /// predictor or after the last update); negative: to be set from the
+      /// next residual; zero: no update before convergence.
       double early_lag_residual = -1.;
       /// The lagged quantities follow Newton's iterates: they are taken
       /// again after every full Newton step (a fixed point iterated
       /// together with Newton's), not only once the residual has fallen to
       /// early_lag_reduction of the first one of the current equations.
       /// Set at the start of a solve and after each update; cleared when an
-      /// update was deferred or changed nothing.
+      /// update changed nothing.
       bool lag_each_iteration = false;
       /// The trust region's radius (NaN until the first trust-region
       /// iteration of the solve): kept through the load step.
