@@ -5,6 +5,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <hyperelastic/assembly/rest_stiffness.h>
+#include <hyperelastic/dynamics/inertia.h>
 #include <hyperelastic/equilibrium_system.h>
 #include <hyperelastic/solvers/inverted_cell_policy.h>
 
@@ -156,6 +157,8 @@ namespace hyperelastic
                                 tangent,
                                 rhs,
                                 projection);
+    if (damping.active())
+      damping.add_to_system(u_ghosted, tangent, rhs);
     if (unheld)
       unheld->regularize(tangent);
     return moves_constraints || moves_terms;
@@ -224,6 +227,8 @@ namespace hyperelastic
                                   extension,
                                   unused_rhs,
                                   TangentProjection::every_point);
+      if (damping.active())
+        damping.add_to_system(u_ghosted, extension, unused_rhs);
       if (unheld)
         unheld->regularize(extension);
     }
@@ -448,7 +453,9 @@ namespace hyperelastic
     point.min_J = e.min_J;
     if (check == TrialCheck::energy)
       {
-        point.energy       = e.energy;
+        point.energy = e.energy;
+        if (damping.active())
+          point.energy += damping.energy(u_ghosted);
         point.energy_noise = e.noise;
       }
     point.admissible =
@@ -503,6 +510,8 @@ namespace hyperelastic
     noise      = force_size.round_off;
     residual   = internal_force;
     residual -= external_force;
+    if (damping.active())
+      damping.add_forces(u_ghosted, residual);
     VectorType free_residual = residual;
     homogeneous_constraints.set_zero(free_residual);
     // The pinned rigid motions' forces are their pins' reactions.
@@ -590,6 +599,50 @@ namespace hyperelastic
     u_ghosted     = u;
     force_scale   = converged.force_scale;
     solution_size = converged.solution_size;
+  }
+
+  template <int dim>
+  bool
+  EquilibriumSystem<dim>::supports_damping() const
+  {
+    return properties().has_potential;
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::set_damping(const double c)
+  {
+    if (!damping.initialized())
+      {
+        // The lumped mass of unit density (HRZ: diagonal, so its product
+        // with ones is its diagonal) on the free displacement unknowns.
+        const InertiaTerm<dim> mass(parts.dof_handler, 1., true);
+        VectorType             ones(owned_dofs, comm), metric(owned_dofs, comm);
+        ones = 1.;
+        VectorType ones_ghosted(owned_dofs, relevant_dofs, comm);
+        ones_ghosted = ones;
+        mass.mass_product(ones_ghosted, metric);
+        homogeneous_constraints.set_zero(metric);
+        damping.initialize(metric);
+      }
+    damping.set(c, u);
+  }
+
+  template <int dim>
+  double
+  EquilibriumSystem<dim>::damping_force()
+  {
+    return damping.active() ? damping.force_norm(u) : 0.;
+  }
+
+  template <int dim>
+  double
+  EquilibriumSystem<dim>::damping_scale()
+  {
+    set_damping(0.);
+    restore_converged_state();
+    assemble_tangent();
+    return damping.stiffness_ratio(tangent);
   }
 
   // ---------------------------------------------------------- checkpoint
@@ -701,6 +754,8 @@ namespace hyperelastic
                                 tangent,
                                 rhs,
                                 TangentProjection::none);
+    if (damping.active())
+      damping.add_to_system(u_ghosted, tangent, rhs);
     if (unheld)
       unheld->regularize(tangent);
   }

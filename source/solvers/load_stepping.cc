@@ -2,6 +2,7 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/solvers/arc_length.h>
 #include <hyperelastic/solvers/load_stepping.h>
+#include <hyperelastic/solvers/snap_sequence.h>
 
 #include <algorithm>
 #include <limits>
@@ -134,8 +135,13 @@ namespace hyperelastic
     const bool may_snap = label == "Load step" &&
                           parameters.snap_iterations > 0 &&
                           system.properties().displacement_controlled;
-    bool   snapping     = false;
-    double snapped_from = -1.;
+    // Snap sub-steps where the system can add a damping energy
+    // (SnapSequence), else one Newton solve with the snap budget.
+    DampedSystem *const damped =
+      may_snap ? dynamic_cast<DampedSystem *>(&system) : nullptr;
+    const bool sub_steps = damped && damped->supports_damping();
+    bool       snapping     = false;
+    double     snapped_from = -1.;
     // The increment the cut-backs resume with after a failed snap step.
     double before_snap = 0.;
     while (t < end)
@@ -155,9 +161,56 @@ namespace hyperelastic
               << " (increment " << attempted << ")"
               << (snapping ? ", snap step" : "") << std::endl;
         system.set_load_factor(t_next);
+        // A converged state: the stepper's bookkeeping and the report.
+        const auto converged = [&](const NewtonResult &result) {
+          step.step += 1;
+          step.load_factor = t_next;
+          step.increment   = attempted;
+          t                = t_next;
+          system.store_converged_state();
+
+          // Grow back towards the nominal increment after two easy steps in
+          // a row (one alone often follows a cut-back by luck).
+          easy_steps_in_a_row =
+            result.iterations() <= parameters.easy_step_iterations
+              ? easy_steps_in_a_row + 1
+              : 0;
+          if (easy_steps_in_a_row >= 2 && increment < nominal)
+            {
+              increment           = std::min(2. * increment, nominal);
+              easy_steps_in_a_row = 0;
+            }
+          step.next_increment = increment;
+          step.easy_steps     = easy_steps_in_a_row;
+          on_converged(step, result);
+          step.cut_backs = 0;
+        };
         NewtonResult result;
         try
           {
+            if (snapping && sub_steps)
+              {
+                // Each sub-step is a step of its own; the last one, an
+                // undamped equilibrium, ends the snap.
+                SnapSequence(newton, parameters.snap_iterations, pcout)
+                  .run(system,
+                       *damped,
+                       t_next,
+                       [&](const NewtonResult &sub,
+                           const unsigned int  failed,
+                           const bool          final) {
+                         step.cut_backs += failed;
+                         converged(sub);
+                         if (!final)
+                           pcout << "\n"
+                                 << label << " " << step.step + 1
+                                 << ": t = " << t_next
+                                 << " (increment " << attempted
+                                 << "), snap sub-step" << std::endl;
+                       });
+                snapping = false;
+                continue;
+              }
             result = snapping
                        ? newton.solve(system, parameters.snap_iterations)
                        : newton.solve(system);
@@ -167,6 +220,16 @@ namespace hyperelastic
             system.restore_converged_state();
             easy_steps_in_a_row = 0;
             double smaller      = 0.5 * attempted;
+            if (snapping && t != snapped_from)
+              // Sub-steps were accepted, but no equilibrium follows them:
+              // the state at t is a pseudo time step's, not one to go on
+              // from.
+              throw ConvergenceFailure(
+                "load step to t = " + std::to_string(t) +
+                ": the snap sub-steps ended without an equilibrium: " +
+                std::string(failure.what()) +
+                "; the last accepted state is a snap sub-step's (load step " +
+                std::to_string(step.step) + ")");
             if (snapping)
               {
                 // The snap did not work: the cut-backs go on where they
@@ -222,27 +285,7 @@ namespace hyperelastic
           }
 
         snapping = false;
-        step.step += 1;
-        step.load_factor = t_next;
-        step.increment   = attempted;
-        t                = t_next;
-        system.store_converged_state();
-
-        // Grow back towards the nominal increment after two easy steps in a
-        // row (one alone often follows a cut-back by luck).
-        easy_steps_in_a_row =
-          result.iterations() <= parameters.easy_step_iterations
-            ? easy_steps_in_a_row + 1
-            : 0;
-        if (easy_steps_in_a_row >= 2 && increment < nominal)
-          {
-            increment           = std::min(2. * increment, nominal);
-            easy_steps_in_a_row = 0;
-          }
-        step.next_increment = increment;
-        step.easy_steps     = easy_steps_in_a_row;
-        on_converged(step, result);
-        step.cut_backs = 0;
+        converged(result);
       }
   }
 } // namespace hyperelastic
