@@ -251,6 +251,7 @@ namespace hyperelastic
                          "nominal one: a snap step from t = "
                       << t << " with the nominal increment and up to "
                       << parameters.snap_iterations << " Newton iterations"
+                      << (sub_steps ? " in all its sub-steps" : "")
                       << std::endl;
                 continue;
               }
