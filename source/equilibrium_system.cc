@@ -641,7 +641,12 @@ namespace hyperelastic
   {
     set_damping(0.);
     restore_converged_state();
+    // At the converged state's own load factor (an obstacle at the next
+    // one may be inside the body there).
+    const double t      = current_load_factor;
+    current_load_factor = converged.load_factor;
     assemble_tangent();
+    current_load_factor = t;
     return damping.stiffness_ratio(tangent);
   }
 

@@ -135,10 +135,13 @@ namespace hyperelastic
     const bool may_snap = label == "Load step" &&
                           parameters.snap_iterations > 0 &&
                           system.properties().displacement_controlled;
-    // Snap sub-steps where the system can add a damping energy
-    // (SnapSequence), else one Newton solve with the snap budget.
+    // Snap sub-steps (Load stepping/Snap sub-step iterations) after a
+    // failed snap step, where the system can add a damping energy
+    // (SnapSequence).
     DampedSystem *const damped =
-      may_snap ? dynamic_cast<DampedSystem *>(&system) : nullptr;
+      may_snap && parameters.snap_sub_step_iterations > 0
+        ? dynamic_cast<DampedSystem *>(&system)
+        : nullptr;
     const bool sub_steps = damped && damped->supports_damping();
     bool       snapping     = false;
     double     snapped_from = -1.;
@@ -188,32 +191,50 @@ namespace hyperelastic
         NewtonResult result;
         try
           {
-            if (snapping && sub_steps)
-              {
-                // Each sub-step is a step of its own; the last one, an
-                // undamped equilibrium, ends the snap.
-                SnapSequence(newton, parameters.snap_iterations, pcout)
-                  .run(system,
-                       *damped,
-                       t_next,
-                       [&](const NewtonResult &sub,
-                           const unsigned int  failed,
-                           const bool          final) {
-                         step.cut_backs += failed;
-                         converged(sub);
-                         if (!final)
-                           pcout << "\n"
-                                 << label << " " << step.step + 1
-                                 << ": t = " << t_next
-                                 << " (increment " << attempted
-                                 << "), snap sub-step" << std::endl;
-                       });
-                snapping = false;
-                continue;
-              }
-            result = snapping
-                       ? newton.solve(system, parameters.snap_iterations)
-                       : newton.solve(system);
+            if (!snapping)
+              result = newton.solve(system);
+            else
+              try
+                {
+                  result = newton.solve(system, parameters.snap_iterations);
+                }
+              catch (const ConvergenceFailure &failure)
+                {
+                  if (!sub_steps)
+                    throw;
+                  // The snap goes on in sub-steps from the last converged
+                  // state, each a step of its own; the last one, an
+                  // undamped equilibrium, ends the snap.
+                  system.restore_converged_state();
+                  ++step.cut_backs;
+                  pcout << "   the snap step failed: "
+                        << first_line(failure.what())
+                        << "\n   snap sub-steps from t = " << t
+                        << " with up to " << parameters.snap_sub_step_iterations
+                        << " Newton iterations in all" << std::endl;
+                  SnapSequence(newton,
+                               parameters.snap_sub_step_iterations,
+                               pcout)
+                    .run(system,
+                         *damped,
+                         t_next,
+                         [&](const NewtonResult &sub,
+                             const unsigned int  failed,
+                             const bool          final) {
+                           step.cut_backs += failed;
+                           step.snap_sub_step = !final;
+                           converged(sub);
+                           step.snap_sub_step = false;
+                           if (!final)
+                             pcout << "\n"
+                                   << label << " " << step.step + 1
+                                   << ": t = " << t_next << " (increment "
+                                   << attempted << "), snap sub-step"
+                                   << std::endl;
+                         });
+                  snapping = false;
+                  continue;
+                }
           }
         catch (const ConvergenceFailure &failure)
           {
@@ -251,7 +272,6 @@ namespace hyperelastic
                          "nominal one: a snap step from t = "
                       << t << " with the nominal increment and up to "
                       << parameters.snap_iterations << " Newton iterations"
-                      << (sub_steps ? " in all its sub-steps" : "")
                       << std::endl;
                 continue;
               }

@@ -58,7 +58,7 @@ namespace hyperelastic
     // The first damping: c D as large as the tangent's diagonal on average
     // at the last converged state (a pseudo time step at which every
     // unknown is held as firmly by the damping as by its own stiffness).
-    double c = damped.damping_scale();
+    double c = damped.damping_scale() / 16.;
     if (!(c > 0.))
       throw ConvergenceFailure("snap sub-steps: the system has no damping "
                                "scale (no stiffness on the free unknowns)");
@@ -73,7 +73,7 @@ namespace hyperelastic
       message << "snap sub-steps to t = " << t << ": " << why << " after "
               << sub_steps << " sub-steps (" << spent
               << " Newton iterations counted against 'Load stepping/Snap "
-                 "iterations' = "
+                 "sub-step iterations' = "
               << budget << ")";
       throw ConvergenceFailure(message.str());
     };

@@ -28,7 +28,7 @@ namespace hyperelastic
   {
   public:
     /// @p budget: the Newton iterations of all sub-steps and undamped
-    /// attempts together, failed ones counted ('Load stepping/Snap
+    /// attempts together, failed ones counted ('Load stepping/Snap sub-step
     /// iterations').
     SnapSequence(const NewtonSolver        &newton,
                  unsigned int               budget,
