@@ -82,7 +82,7 @@ namespace hyperelastic
       "'snap step'. 0: no snap steps.");
     prm.declare_entry(
       "Snap sub-step iterations",
-      "200",
+      "400",
       Integer(0),
       "A snap step whose first Newton solve ('Snap iterations') failed goes "
       "on from the last converged state in sub-steps: each a pseudo time "
@@ -91,8 +91,8 @@ namespace hyperelastic
       "start) solved by Newton (at most 'Newton/Max iterations', until the "
       "residual has fallen tenfold; negative curvature followed), and an "
       "accepted step of its own (a row of the CSV, 'snap sub-step' in the "
-      "log; not an equilibrium, no checkpoint); c starts at the tangent's "
-      "mean diagonal and falls after easy sub-steps and with the residual. "
+      "log; not an equilibrium, no checkpoint); c starts at 1/16 of the "
+      "tangent's mean diagonal and falls after easy sub-steps and with the residual. "
       "From the sub-steps an undamped Newton solve (exact tangent, negative "
       "curvature followed) is tried each time their residual has fallen "
       "fourfold; the first one that converges ends the snap. This many "

@@ -55,9 +55,11 @@ namespace hyperelastic
   {
     const unsigned int max_iterations = damped_newton.settings().max_iterations;
     const ConvergenceTest convergence(damped_newton.settings());
-    // The first damping: c D as large as the tangent's diagonal on average
-    // at the last converged state (a pseudo time step at which every
-    // unknown is held as firmly by the damping as by its own stiffness).
+    // The first damping: c D a sixteenth of the tangent's diagonal on
+    // average at the last converged state. As large as the diagonal, the
+    // damping held the body back so firmly that an obstacle moving over
+    // the step could not push it (the shell of tests/stability.cc case
+    // shell_plate: every sub-step failed, and more damping made it worse).
     double c = damped.damping_scale() / 16.;
     if (!(c > 0.))
       throw ConvergenceFailure("snap sub-steps: the system has no damping "

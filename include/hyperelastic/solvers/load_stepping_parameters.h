@@ -35,7 +35,7 @@ namespace hyperelastic
     unsigned int snap_iterations = 20;
     /// 'Snap sub-step iterations': the Newton iterations of a snap step's
     /// sub-steps in all (SnapSequence; 0: none).
-    unsigned int snap_sub_step_iterations = 200;
+    unsigned int snap_sub_step_iterations = 400;
     /// A snap step is tried where a cut-back would take the increment
     /// below this fraction of the nominal one.
     static constexpr double snap_fraction = 1. / 16.;
