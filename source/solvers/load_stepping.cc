@@ -142,7 +142,7 @@ namespace hyperelastic
       may_snap && parameters.snap_sub_step_iterations > 0
         ? dynamic_cast<DampedSystem *>(&system)
         : nullptr;
-    const bool sub_steps = damped && damped->supports_damping();
+    const bool sub_steps    = damped && damped->supports_damping();
     bool       snapping     = false;
     double     snapped_from = -1.;
     // The increment the cut-backs resume with after a failed snap step.

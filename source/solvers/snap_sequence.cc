@@ -68,14 +68,14 @@ namespace hyperelastic
     unsigned int spent = 0, sub_steps = 0, failed = 0, failed_in_a_row = 0;
     double       previous_residual = std::numeric_limits<double>::quiet_NaN();
     double       attempted_at      = previous_residual;
-    const auto   give_up = [&](const std::string &why) {
+    const auto   give_up           = [&](const std::string &why) {
       damped.set_damping(0.);
       system.restore_converged_state();
       std::ostringstream message;
       message << "snap sub-steps to t = " << t << ": " << why << " after "
               << sub_steps << " sub-steps (" << spent
               << " Newton iterations counted against 'Load stepping/Snap "
-                 "sub-step iterations' = "
+                             "sub-step iterations' = "
               << budget << ")";
       throw ConvergenceFailure(message.str());
     };
@@ -127,8 +127,8 @@ namespace hyperelastic
         const double        target = convergence.residual_target(norms);
         pcout << "   snap sub-step " << sub_steps << ": " << sub.iterations()
               << " Newton iterations; damping force " << force
-              << ", residual without damping " << norms.residual
-              << " (target " << target << ")" << std::endl;
+              << ", residual without damping " << norms.residual << " (target "
+              << target << ")" << std::endl;
         if (norms.residual <= target)
           {
             accept(sub, failed, true);
@@ -145,9 +145,7 @@ namespace hyperelastic
         else if (sub.iterations() > max_iterations / 2)
           c *= 2.;
         if (std::isfinite(previous_residual))
-          c *= std::clamp(norms.residual / previous_residual,
-                          1. / growth,
-                          1.);
+          c *= std::clamp(norms.residual / previous_residual, 1. / growth, 1.);
         previous_residual = norms.residual;
         if (spent >= budget)
           give_up("the iteration budget is spent");
@@ -176,8 +174,8 @@ namespace hyperelastic
             spent += max_iterations;
             ++failed;
             back();
-            pcout << "   undamped Newton failed: "
-                  << first_line(failure.what()) << std::endl;
+            pcout << "   undamped Newton failed: " << first_line(failure.what())
+                  << std::endl;
             if (spent >= budget)
               give_up("the iteration budget is spent");
           }

@@ -62,7 +62,9 @@ namespace hyperelastic
     /// @p rhs (the tangent and right-hand side of a linearization; D is
     /// zero on constrained rows, which stay as they are).
     void
-    add_to_system(const VectorType &u, MatrixType &matrix, VectorType &rhs) const;
+    add_to_system(const VectorType &u,
+                  MatrixType       &matrix,
+                  VectorType       &rhs) const;
 
     /// The mean ratio of the @p matrix diagonal to D over the damped
     /// unknowns: the damping c at which c D matches the stiffness's
