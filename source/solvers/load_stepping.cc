@@ -196,7 +196,13 @@ namespace hyperelastic
             else
               try
                 {
-                  result = newton.solve(system, parameters.snap_iterations);
+                  // Without sub-steps to follow, the one solve has their
+                  // budget too.
+                  result = newton.solve(
+                    system,
+                    sub_steps ? parameters.snap_iterations
+                              : std::max(parameters.snap_iterations,
+                                         parameters.snap_sub_step_iterations));
                 }
               catch (const ConvergenceFailure &failure)
                 {
@@ -212,26 +218,41 @@ namespace hyperelastic
                         << "\n   snap sub-steps from t = " << t
                         << " with up to " << parameters.snap_sub_step_iterations
                         << " Newton iterations in all" << std::endl;
-                  SnapSequence(newton,
-                               parameters.snap_sub_step_iterations,
-                               pcout)
-                    .run(system,
-                         *damped,
-                         t_next,
-                         [&](const NewtonResult &sub,
-                             const unsigned int  failed,
-                             const bool          final) {
-                           step.cut_backs += failed;
-                           step.snap_sub_step = !final;
-                           converged(sub);
-                           step.snap_sub_step = false;
-                           if (!final)
-                             pcout << "\n"
-                                   << label << " " << step.step + 1
-                                   << ": t = " << t_next << " (increment "
-                                   << attempted << "), snap sub-step"
-                                   << std::endl;
-                         });
+                  // Sub-steps that fail before one is accepted leave the
+                  // snap step's own failure as the reason (the cut-backs go
+                  // on, and the message names what stopped the step).
+                  const ConvergenceFailure snap_failure = failure;
+                  try
+                    {
+                      SnapSequence(newton,
+                                   parameters.snap_sub_step_iterations,
+                                   pcout)
+                        .run(system,
+                             *damped,
+                             t_next,
+                             [&](const NewtonResult &sub,
+                                 const unsigned int  failed,
+                                 const bool          final) {
+                               step.cut_backs += failed;
+                               step.snap_sub_step = !final;
+                               converged(sub);
+                               step.snap_sub_step = false;
+                               if (!final)
+                                 pcout << "\n"
+                                       << label << " " << step.step + 1
+                                       << ": t = " << t_next << " (increment "
+                                       << attempted << "), snap sub-step"
+                                       << std::endl;
+                             });
+                    }
+                  catch (const ConvergenceFailure &sub_failure)
+                    {
+                      if (t != snapped_from)
+                        throw;
+                      pcout << "   " << first_line(sub_failure.what())
+                            << std::endl;
+                      throw snap_failure;
+                    }
                   snapping = false;
                   continue;
                 }

@@ -12,7 +12,8 @@ namespace hyperelastic
   public:
     virtual ~DampedSystem() = default;
 
-    /// Whether the damping can be added (the system has a potential).
+    /// Whether the damping can be added (EquilibriumSystem: with a
+    /// potential, and no unheld bodies).
     virtual bool
     supports_damping() const = 0;
 
