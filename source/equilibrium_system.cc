@@ -5,6 +5,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <hyperelastic/assembly/rest_stiffness.h>
+#include <hyperelastic/dynamics/inertia.h>
 #include <hyperelastic/equilibrium_system.h>
 #include <hyperelastic/solvers/inverted_cell_policy.h>
 
@@ -154,6 +155,8 @@ namespace hyperelastic
                                 tangent,
                                 rhs,
                                 projection);
+    if (damping.active())
+      damping.add_to_system(u_ghosted, tangent, rhs);
     if (unheld)
       unheld->regularize(tangent);
     predictor_linearization = moves_constraints || moves_terms;
@@ -223,6 +226,8 @@ namespace hyperelastic
                                   extension,
                                   unused_rhs,
                                   TangentProjection::every_point);
+      if (damping.active())
+        damping.add_to_system(u_ghosted, extension, unused_rhs);
       if (unheld)
         unheld->regularize(extension);
     }
@@ -455,7 +460,9 @@ namespace hyperelastic
     point.min_J = e.min_J;
     if (check == TrialCheck::energy)
       {
-        point.energy       = e.energy;
+        point.energy = e.energy;
+        if (damping.active())
+          point.energy += damping.energy(u_ghosted);
         point.energy_noise = e.noise;
       }
     point.admissible =
@@ -510,6 +517,8 @@ namespace hyperelastic
     noise      = force_size.round_off;
     residual   = internal_force;
     residual -= external_force;
+    if (damping.active())
+      damping.add_forces(u_ghosted, residual);
     VectorType free_residual = residual;
     homogeneous_constraints.set_zero(free_residual);
     // The pinned rigid motions' forces are their pins' reactions.
@@ -597,6 +606,59 @@ namespace hyperelastic
     u_ghosted     = u;
     force_scale   = converged.force_scale;
     solution_size = converged.solution_size;
+  }
+
+  template <int dim>
+  bool
+  EquilibriumSystem<dim>::supports_damping() const
+  {
+    // Not with unheld bodies: the damping would hold their rigid motions,
+    // which UnheldRigidMotions pins and projects out of the residual
+    // (measured: the frictionless squeezed ball of tests/contact_held.cc
+    // drifted, the stacked blocks never reached an equilibrium).
+    return properties().has_potential && !unheld;
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::set_damping(const double c)
+  {
+    if (!damping.initialized())
+      {
+        // The lumped mass of unit density (HRZ: diagonal, so its product
+        // with ones is its diagonal) on the free displacement unknowns.
+        const InertiaTerm<dim> mass(parts.dof_handler, 1., true);
+        VectorType             ones(owned_dofs, comm), metric(owned_dofs, comm);
+        ones = 1.;
+        VectorType ones_ghosted(owned_dofs, relevant_dofs, comm);
+        ones_ghosted = ones;
+        mass.mass_product(ones_ghosted, metric);
+        homogeneous_constraints.set_zero(metric);
+        damping.initialize(metric);
+      }
+    damping.set(c, u);
+  }
+
+  template <int dim>
+  double
+  EquilibriumSystem<dim>::damping_force()
+  {
+    return damping.active() ? damping.force_norm(u) : 0.;
+  }
+
+  template <int dim>
+  double
+  EquilibriumSystem<dim>::damping_scale()
+  {
+    set_damping(0.);
+    restore_converged_state();
+    // At the converged state's own load factor (an obstacle at the next
+    // one may be inside the body there).
+    const double t      = current_load_factor;
+    current_load_factor = converged.load_factor;
+    assemble_tangent();
+    current_load_factor = t;
+    return damping.stiffness_ratio(tangent);
   }
 
   // ---------------------------------------------------------- checkpoint
@@ -708,6 +770,8 @@ namespace hyperelastic
                                 tangent,
                                 rhs,
                                 TangentProjection::none);
+    if (damping.active())
+      damping.add_to_system(u_ghosted, tangent, rhs);
     if (unheld)
       unheld->regularize(tangent);
   }

@@ -23,8 +23,10 @@
 #include <hyperelastic/solvers/convergence_test.h>
 #include <hyperelastic/solvers/linear_solver.h>
 #include <hyperelastic/solvers/linear_solver_parameters.h>
+#include <hyperelastic/solvers/damped_system.h>
 #include <hyperelastic/solvers/load_stepping.h>
 #include <hyperelastic/solvers/newton_parameters.h>
+#include <hyperelastic/solvers/snap_damping.h>
 #include <hyperelastic/solvers/unheld_rigid_motions.h>
 
 #include <memory>
@@ -33,7 +35,7 @@
 namespace hyperelastic
 {
   template <int dim>
-  class EquilibriumSystem : public SteppedSystem
+  class EquilibriumSystem : public SteppedSystem, public DampedSystem
   {
   public:
     /// The parts the system works on, owned by Problem (they outlive it).
@@ -162,6 +164,17 @@ namespace hyperelastic
     store_converged_state() override;
     void
     restore_converged_state() override;
+
+    // DampedSystem: the lumped mass of unit density on the free unknowns
+    // (SnapDamping), with a potential only.
+    bool
+    supports_damping() const override;
+    void
+    set_damping(double c) override;
+    double
+    damping_force() override;
+    double
+    damping_scale() override;
 
     /// What a restart needs (a checkpoint): the last converged state and
     /// the one before it (the secant predictor's), the driver's state and
@@ -293,5 +306,9 @@ namespace hyperelastic
 
     /// The last converged state and the one before it.
     ConvergedState converged, previous;
+
+    /// The damping of snap sub-steps (inactive otherwise; its metric is
+    /// made when first needed).
+    SnapDamping damping;
   };
 } // namespace hyperelastic

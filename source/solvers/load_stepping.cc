@@ -2,6 +2,7 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/solvers/arc_length.h>
 #include <hyperelastic/solvers/load_stepping.h>
+#include <hyperelastic/solvers/snap_sequence.h>
 
 #include <algorithm>
 #include <limits>
@@ -134,8 +135,16 @@ namespace hyperelastic
     const bool may_snap = label == "Load step" &&
                           parameters.snap_iterations > 0 &&
                           system.properties().displacement_controlled;
-    bool   snapping     = false;
-    double snapped_from = -1.;
+    // Snap sub-steps (Load stepping/Snap sub-step iterations) after a
+    // failed snap step, where the system can add a damping energy
+    // (SnapSequence).
+    DampedSystem *const damped =
+      may_snap && parameters.snap_sub_step_iterations > 0
+        ? dynamic_cast<DampedSystem *>(&system)
+        : nullptr;
+    const bool sub_steps    = damped && damped->supports_damping();
+    bool       snapping     = false;
+    double     snapped_from = -1.;
     // The increment the cut-backs resume with after a failed snap step.
     double before_snap = 0.;
     while (t < end)
@@ -155,18 +164,114 @@ namespace hyperelastic
               << " (increment " << attempted << ")"
               << (snapping ? ", snap step" : "") << std::endl;
         system.set_load_factor(t_next);
+        // A converged state: the stepper's bookkeeping and the report.
+        const auto converged = [&](const NewtonResult &result) {
+          step.step += 1;
+          step.load_factor = t_next;
+          step.increment   = attempted;
+          t                = t_next;
+          system.store_converged_state();
+
+          // Grow back towards the nominal increment after two easy steps in
+          // a row (one alone often follows a cut-back by luck).
+          easy_steps_in_a_row =
+            result.iterations() <= parameters.easy_step_iterations
+              ? easy_steps_in_a_row + 1
+              : 0;
+          if (easy_steps_in_a_row >= 2 && increment < nominal)
+            {
+              increment           = std::min(2. * increment, nominal);
+              easy_steps_in_a_row = 0;
+            }
+          step.next_increment = increment;
+          step.easy_steps     = easy_steps_in_a_row;
+          on_converged(step, result);
+          step.cut_backs = 0;
+        };
         NewtonResult result;
         try
           {
-            result = snapping
-                       ? newton.solve(system, parameters.snap_iterations)
-                       : newton.solve(system);
+            if (!snapping)
+              result = newton.solve(system);
+            else
+              try
+                {
+                  // Without sub-steps to follow, the one solve has their
+                  // budget too.
+                  result = newton.solve(
+                    system,
+                    sub_steps ? parameters.snap_iterations
+                              : std::max(parameters.snap_iterations,
+                                         parameters.snap_sub_step_iterations));
+                }
+              catch (const ConvergenceFailure &failure)
+                {
+                  if (!sub_steps)
+                    throw;
+                  // The snap goes on in sub-steps from the last converged
+                  // state, each a step of its own; the last one, an
+                  // undamped equilibrium, ends the snap.
+                  system.restore_converged_state();
+                  ++step.cut_backs;
+                  pcout << "   the snap step failed: "
+                        << first_line(failure.what())
+                        << "\n   snap sub-steps from t = " << t
+                        << " with up to " << parameters.snap_sub_step_iterations
+                        << " Newton iterations in all" << std::endl;
+                  // Sub-steps that fail before one is accepted leave the
+                  // snap step's own failure as the reason (the cut-backs go
+                  // on, and the message names what stopped the step).
+                  const ConvergenceFailure snap_failure = failure;
+                  try
+                    {
+                      SnapSequence(newton,
+                                   parameters.snap_sub_step_iterations,
+                                   pcout)
+                        .run(system,
+                             *damped,
+                             t_next,
+                             [&](const NewtonResult &sub,
+                                 const unsigned int  failed,
+                                 const bool          final) {
+                               step.cut_backs += failed;
+                               step.snap_sub_step = !final;
+                               converged(sub);
+                               step.snap_sub_step = false;
+                               if (!final)
+                                 pcout << "\n"
+                                       << label << " " << step.step + 1
+                                       << ": t = " << t_next << " (increment "
+                                       << attempted << "), snap sub-step"
+                                       << std::endl;
+                             });
+                    }
+                  catch (const ConvergenceFailure &sub_failure)
+                    {
+                      if (t != snapped_from)
+                        throw;
+                      pcout << "   " << first_line(sub_failure.what())
+                            << std::endl;
+                      throw snap_failure;
+                    }
+                  snapping = false;
+                  continue;
+                }
           }
         catch (const ConvergenceFailure &failure)
           {
             system.restore_converged_state();
             easy_steps_in_a_row = 0;
             double smaller      = 0.5 * attempted;
+            if (snapping && t != snapped_from)
+              // Sub-steps were accepted, but no equilibrium follows them:
+              // the state at t is a pseudo time step's, not one to go on
+              // from.
+              throw ConvergenceFailure(
+                "load step to t = " + std::to_string(t) +
+                ": the snap sub-steps ended without an equilibrium: " +
+                std::string(failure.what()) +
+                "; the last accepted state is a snap sub-step's (load step " +
+                std::to_string(step.step) + ")");
             if (snapping)
               {
                 // The snap did not work: the cut-backs go on where they
@@ -222,27 +327,7 @@ namespace hyperelastic
           }
 
         snapping = false;
-        step.step += 1;
-        step.load_factor = t_next;
-        step.increment   = attempted;
-        t                = t_next;
-        system.store_converged_state();
-
-        // Grow back towards the nominal increment after two easy steps in a
-        // row (one alone often follows a cut-back by luck).
-        easy_steps_in_a_row =
-          result.iterations() <= parameters.easy_step_iterations
-            ? easy_steps_in_a_row + 1
-            : 0;
-        if (easy_steps_in_a_row >= 2 && increment < nominal)
-          {
-            increment           = std::min(2. * increment, nominal);
-            easy_steps_in_a_row = 0;
-          }
-        step.next_increment = increment;
-        step.easy_steps     = easy_steps_in_a_row;
-        on_converged(step, result);
-        step.cut_backs = 0;
+        converged(result);
       }
   }
 } // namespace hyperelastic

@@ -65,7 +65,7 @@ namespace hyperelastic
                       "stops with a convergence failure (exit status 3).");
     prm.declare_entry(
       "Snap iterations",
-      "200",
+      "20",
       Integer(0),
       "Snaps under displacement control (load control of a scene whose "
       "load factor moves only prescribed displacements and obstacles: no "
@@ -76,9 +76,30 @@ namespace hyperelastic
       "tried once instead at the nominal increment with up to this many "
       "Newton iterations: the energy descent of Newton's line search (and "
       "the trust region of 'Newton/Follow negative curvature') leaves the "
-      "ended branch for an equilibrium beyond the fold. If the snap step "
-      "fails too, the cut-backs continue as before. The Newton table "
-      "prints 'snap step'. 0: no snap steps.");
+      "ended branch for an equilibrium beyond the fold. If that fails, the "
+      "snap goes on in sub-steps ('Snap sub-step iterations'); if those "
+      "fail too, the cut-backs continue as before. The Newton table prints "
+      "'snap step'. 0: no snap steps.");
+    prm.declare_entry(
+      "Snap sub-step iterations",
+      "400",
+      Integer(0),
+      "A snap step whose first Newton solve ('Snap iterations') failed goes "
+      "on from the last converged state in sub-steps: each a pseudo time "
+      "step at the snap's load factor, the potential plus the damping "
+      "c/2 |u - u_k|^2 (lumped mass of unit density, u_k the sub-step's "
+      "start) solved by Newton (at most 'Newton/Max iterations', until the "
+      "residual has fallen tenfold; negative curvature followed), and an "
+      "accepted step of its own (a row of the CSV, 'snap sub-step' in the "
+      "log; not an equilibrium, no checkpoint); c starts at 1/16 of the "
+      "tangent's mean diagonal and falls after easy sub-steps and with the residual. "
+      "From the sub-steps an undamped Newton solve (exact tangent, negative "
+      "curvature followed) is tried each time their residual has fallen "
+      "fourfold; the first one that converges ends the snap. This many "
+      "Newton iterations at most in all the sub-steps and undamped solves "
+      "together (failed ones counted whole). If the sub-steps fail before "
+      "one is accepted, the cut-backs continue; after, the run stops. 0: no "
+      "sub-steps.");
     prm.declare_entry("Easy step iterations",
                       "6",
                       Integer(1),
@@ -110,6 +131,7 @@ namespace hyperelastic
     minimum_increment    = prm.get_double("Minimum increment");
     easy_step_iterations = prm.get_integer("Easy step iterations");
     snap_iterations      = prm.get_integer("Snap iterations");
+    snap_sub_step_iterations = prm.get_integer("Snap sub-step iterations");
     secant_predictor     = prm.get("Predictor") == "secant";
     method = prm.get("Method") == "arc length" ? LoadControl::arc_length
                                                : LoadControl::load_control;

@@ -41,6 +41,12 @@ namespace hyperelastic
   {
   }
 
+  NewtonSolver
+  NewtonSolver::with_settings(const NewtonParameters &settings) const
+  {
+    return NewtonSolver(settings, pcout, verbose);
+  }
+
   namespace
   {
     /// The table's header; its merit column is the energy, or the residual
@@ -489,8 +495,11 @@ namespace hyperelastic
     const bool linear_done = properties.linear && row.step_length == 1.;
     if (state.moving_constraints)
       return false;
+    // solve_loosely(): the residual has fallen far enough.
+    const bool loose_done =
+      state.loose_target > 0. && norms.residual <= state.loose_target;
     if (!(convergence.converged(norms, row.update, system.solution_scale()) ||
-          linear_done))
+          linear_done || loose_done))
       {
         update_lagged_early(system, norms, row.step_length == 1., it, state);
         return false;
@@ -586,6 +595,21 @@ namespace hyperelastic
   NewtonSolver::solve(NonlinearSystem   &system,
                       const unsigned int max_iterations) const
   {
+    return solve(system, max_iterations, 0.);
+  }
+
+  NewtonResult
+  NewtonSolver::solve_loosely(NonlinearSystem &system,
+                              const double     reduction) const
+  {
+    return solve(system, parameters.max_iterations, reduction);
+  }
+
+  NewtonResult
+  NewtonSolver::solve(NonlinearSystem   &system,
+                      const unsigned int max_iterations,
+                      const double       reduction) const
+  {
     const ConvergenceTest             convergence(parameters);
     const TangentPolicy               policy(parameters.tangent,
                                parameters.follow_negative_curvature);
@@ -601,6 +625,7 @@ namespace hyperelastic
       }
 
     SolveState state;
+    state.loose_reduction = reduction;
     // Friction's normal forces follow the iterates from the first full
     // step on (update_lagged_early).
     state.lag_each_iteration = true;
@@ -625,6 +650,8 @@ namespace hyperelastic
             table(result));
 
         state.target = convergence.residual_target(norms);
+        if (it == 1 && state.loose_reduction > 0.)
+          state.loose_target = state.loose_reduction * norms.residual;
         if (finished(system,
                      properties,
                      convergence,

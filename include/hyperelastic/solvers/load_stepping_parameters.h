@@ -30,8 +30,12 @@ namespace hyperelastic
     bool         adaptive             = true;
     double       minimum_increment    = 1e-4;
     unsigned int easy_step_iterations = 6;
-    /// 'Snap iterations': Newton's budget for a snap step (0: none).
-    unsigned int snap_iterations = 200;
+    /// 'Snap iterations': Newton's budget for a snap step's first, undamped
+    /// solve (0: no snap steps).
+    unsigned int snap_iterations = 20;
+    /// 'Snap sub-step iterations': the Newton iterations of a snap step's
+    /// sub-steps in all (SnapSequence; 0: none).
+    unsigned int snap_sub_step_iterations = 400;
     /// A snap step is tried where a cut-back would take the increment
     /// below this fraction of the nominal one.
     static constexpr double snap_fraction = 1. / 16.;

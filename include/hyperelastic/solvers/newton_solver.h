@@ -249,6 +249,11 @@ namespace hyperelastic
                  dealii::ConditionalOStream pcout,
                  bool                       verbose);
 
+    /// A solver with other @p settings that prints as this one does
+    /// (SnapSequence's solves).
+    NewtonSolver
+    with_settings(const NewtonParameters &settings) const;
+
     /// Iterate until converged; throws ConvergenceFailure with the reason and
     /// the residual history otherwise (iteration limit, line-search failure,
     /// NaN; the system's own failures, such as a Krylov failure, pass
@@ -260,6 +265,13 @@ namespace hyperelastic
     /// (a snap step's larger budget).
     NewtonResult
     solve(NonlinearSystem &system, unsigned int max_iterations) const;
+
+    /// The same with a looser end (a pseudo time step of snap sub-steps,
+    /// SnapSequence): converged once the residual is at most @p reduction
+    /// times the first iteration's, or Newton's tests pass; budget
+    /// 'Newton/Max iterations'.
+    NewtonResult
+    solve_loosely(NonlinearSystem &system, double reduction) const;
 
     /// The Newton table of @p result as text.
     static std::string
@@ -273,6 +285,13 @@ namespace hyperelastic
     }
 
   private:
+    /// solve() with @p max_iterations, and solve_loosely()'s @p reduction
+    /// (0: Newton's tests only).
+    NewtonResult
+    solve(NonlinearSystem &system,
+          unsigned int     max_iterations,
+          double           reduction) const;
+
     /// What a solve carries from one iteration to the next.
     struct SolveState
     {
@@ -309,6 +328,11 @@ namespace hyperelastic
       /// had failed: the following iterations of the solve start with the
       /// trust region.
       bool in_trust_region = false;
+      /// solve_loosely(): the reduction of the first iteration's residual
+      /// that ends the solve (0: Newton's tests only), and the residual it
+      /// asks for (set after the first iteration).
+      double loose_reduction = 0.;
+      double loose_target    = 0.;
     };
 
     /// One iteration from the current iterate: the projection @p policy
