@@ -823,11 +823,12 @@ namespace
   /// since issue 44's sub-steps: its one solve fails, and 7 snap sub-steps
   /// and an undamped solve follow on 1 rank) takes the run past it: it
   /// arrives at t = 1, no accepted increment below 1/16 of the nominal one,
-  /// every accepted state probed stable, and in the step of the buckle the
-  /// plate force falls while the apex moves several times as far as the
-  /// plate (with one solve: 0.211 to 0.170, 4.8; with sub-steps, which
-  /// repeat the load factor, the largest fall is 0.057 and the ratio
-  /// infinite).
+  /// every accepted state probed stable, and from the equilibrium before
+  /// the buckle to the one after it the plate force falls while the apex
+  /// moves several times as far as the plate (with one solve: 0.211 to
+  /// 0.170, 4.8). The snap sub-steps repeat the snap's load factor and are
+  /// no equilibria: the force and the travel are compared between the last
+  /// rows of consecutive load factors (the equilibria).
   void
   shell_plate(Checker &checker, const std::string &mesh)
   {
@@ -847,10 +848,14 @@ namespace
     double       smallest = 1., largest_drop = 1., drop_ratio = 0.;
     double       previous_force = 0., previous_uz = 0., previous_t = 0.;
     unsigned int stable = 0;
-    for (const auto &s : steps)
+    for (unsigned int k = 0; k < steps.size(); ++k)
       {
-        smallest = std::min(smallest, s.load_increment);
+        const auto &s = steps[k];
+        smallest      = std::min(smallest, s.load_increment);
         stable += s.newton_history.back().probed_stable;
+        // A snap sub-step: the next row has the same load factor.
+        if (k + 1 < steps.size() && steps[k + 1].load_factor == s.load_factor)
+          continue;
         const double force = -column(s, "contact_force_1_z");
         const double uz    = column(s, "point1_uz");
         if (previous_force > 0. && force / previous_force < largest_drop)
