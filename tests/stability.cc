@@ -853,6 +853,11 @@ namespace
         const auto &s = steps[k];
         smallest      = std::min(smallest, s.load_increment);
         stable += s.newton_history.back().probed_stable;
+        if (print)
+          std::cout << "  t " << s.load_factor << ": "
+                    << s.newton_history.size() << " Newton iterations, "
+                    << "plate force " << -column(s, "contact_force_1_z")
+                    << ", apex u_z " << column(s, "point1_uz") << std::endl;
         // A snap sub-step: the next row has the same load factor.
         if (k + 1 < steps.size() && steps[k + 1].load_factor == s.load_factor)
           continue;
