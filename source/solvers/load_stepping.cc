@@ -33,16 +33,6 @@ namespace hyperelastic
   {
   }
 
-  namespace
-  {
-    /// The first line of a failure message (the reason without the table).
-    std::string
-    first_line(const std::string &text)
-    {
-      return text.substr(0, text.find('\n'));
-    }
-  } // namespace
-
   void
   LoadStepper::run(
     const NewtonSolver &newton,

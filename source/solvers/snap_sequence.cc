@@ -38,15 +38,6 @@ namespace hyperelastic
   {
   }
 
-  namespace
-  {
-    std::string
-    first_line(const std::string &text)
-    {
-      return text.substr(0, text.find('\n'));
-    }
-  } // namespace
-
   void
   SnapSequence::run(SteppedSystem &system,
                     DampedSystem  &damped,

@@ -11,9 +11,19 @@
 #include <hyperelastic/solvers/newton_solver.h>
 
 #include <functional>
+#include <string>
 
 namespace hyperelastic
 {
+  /// The first line of a failure message: the reason, without the Newton
+  /// table a convergence failure carries after it (the stepper's and the
+  /// snap sub-steps' log lines).
+  inline std::string
+  first_line(const std::string &text)
+  {
+    return text.substr(0, text.find('\n'));
+  }
+
   /// The hooks of arc-length continuation, where the load factor t is an
   /// unknown next to u: states (u, t), the free residual and its derivative
   /// in t, and solves with the tangent.
