@@ -110,6 +110,7 @@ namespace hyperelastic
 
   double
   NewtonSolver::forcing_term(const std::vector<NewtonIteration> &history,
+                             const double step_start_residual,
                              const double residual_target) const
   {
     if (!parameters.inexact)
@@ -119,8 +120,15 @@ namespace hyperelastic
     if (history.size() < 2)
       return eta_max;
     const double gamma = 0.9;
+    // How far the last iteration took the residual of the equations it
+    // solved: after a lagged update the residual before it is the new
+    // equations' (the rows' residuals before and after an update belong to
+    // different equations, and their ratio measures the update, not how
+    // well the linearization predicted the step).
     const double r_new = history.back().residual;
-    const double r_old = history[history.size() - 2].residual;
+    const double r_old = std::isfinite(step_start_residual) ?
+                           step_start_residual :
+                           history[history.size() - 2].residual;
     if (!(r_old > 0.) || !std::isfinite(r_new))
       return eta_max;
     double       eta      = gamma * (r_new / r_old) * (r_new / r_old);
@@ -361,7 +369,9 @@ namespace hyperelastic
     // The smallest J of the current iterate (not known before the first
     // iteration).
     const double min_J = history.empty() ? nan : history.back().min_J;
-    const double eisenstat_walker = forcing_term(history, state.target);
+    const double eisenstat_walker =
+      forcing_term(history, state.step_start_residual, state.target);
+    state.step_start_residual = state.equations_residual;
     const bool   predictor        = state.moving_constraints;
     // The iteration that imposes the prescribed-displacement increment is
     // the load step's predictor: solved fully. So is a projected tangent's:
@@ -528,19 +538,22 @@ namespace hyperelastic
         NonlinearSystem::Verdict::accepted)
       return true;
     row.probed_stable = false;
-    lagged_quantities_updated(it, state);
+    lagged_quantities_updated(system, it, state);
     return false;
   }
 
   void
-  NewtonSolver::lagged_quantities_updated(const unsigned int it,
+  NewtonSolver::lagged_quantities_updated(NonlinearSystem   &system,
+                                          const unsigned int it,
                                           SolveState        &state) const
   {
     // The equations changed (lagged friction): their energy at the current
-    // iterate is new, and they get the full budget.
+    // iterate is new, and they get the full budget. Their residual there
+    // is what the next iteration starts from (for its forcing term).
     state.current            = TrialPoint();
     state.budget_start       = it;
     state.early_lag_residual = -1.;
+    state.equations_residual = system.residual_norms().residual;
     if (verbose)
       pcout << "   (lagged quantities updated)" << std::endl;
   }
@@ -553,36 +566,33 @@ namespace hyperelastic
                                     SolveState          &state) const
   {
     // Lagged friction: re-solving the step to full convergence for each
-    // update of the normal forces costs a solve an update. Once Newton has
-    // gained early_lag_reduction on the first residual of these equations,
-    // the iterate is close enough for the normal forces: they are updated
-    // there, and Newton goes on with the new equations (the convergence
-    // test still checks them once more when it passes). Besides, the
-    // normal forces follow Newton's iterates from the solve's start: they
-    // are taken again after each full step (the fixed point of the normal
-    // forces contracts by about a tenth an update at mu = 0.5, so waiting
-    // for the residual of each new set of equations to fall tenfold
-    // doubled the iterations an update costs). A step the line search
-    // shortened, and an update without change, fall back to the residual
-    // rule.
-    const bool follow = state.lag_each_iteration && full_step;
+    // update of the normal forces costs a solve an update. The normal
+    // forces follow Newton's iterates instead: they are taken again after
+    // each full step (the fixed point of the normal forces contracts by
+    // about a tenth an update at mu = 0.5), and the convergence test checks
+    // them once more when it passes. After a step the line search
+    // shortened, they are taken once the residual has fallen to
+    // early_lag_reduction of the first one of the current equations. An
+    // update that changed nothing does not stop the following: the
+    // iterates move on, and a change found only at the converged state
+    // costs the new equations' whole convergence (block between plates,
+    // step 3: 12 Newton iterations against 9).
     if (state.early_lag_residual < 0.)
       {
         state.early_lag_residual = early_lag_reduction * norms.residual;
-        if (!follow)
+        if (!full_step)
           return;
       }
-    else if (!(norms.residual <= state.early_lag_residual || follow))
+    else if (!(norms.residual <= state.early_lag_residual || full_step))
       return;
     const LaggedUpdate outcome = system.update_lagged();
     if (outcome == LaggedUpdate::unchanged)
       {
+        // From here on, full steps only.
         state.early_lag_residual = 0.;
-        state.lag_each_iteration = false;
         return;
       }
-    lagged_quantities_updated(it, state);
-    state.lag_each_iteration = true;
+    lagged_quantities_updated(system, it, state);
   }
 
   NewtonResult
@@ -626,9 +636,6 @@ namespace hyperelastic
 
     SolveState state;
     state.loose_reduction = reduction;
-    // Friction's normal forces follow the iterates from the first full
-    // step on (update_lagged_early).
-    state.lag_each_iteration = true;
     for (unsigned int it = 1;
          it - state.budget_start <= max_iterations;
          ++it)
@@ -637,6 +644,7 @@ namespace hyperelastic
           iterate(system, properties, policy, it, state, result);
         const ResidualNorms norms    = system.residual_norms();
         row.residual                 = norms.residual;
+        state.equations_residual     = norms.residual;
         state.current.residual       = norms.residual;
         state.current.residual_noise = norms.noise;
         result.history.push_back(row);

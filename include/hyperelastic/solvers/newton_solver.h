@@ -309,18 +309,12 @@ namespace hyperelastic
       /// budget; the table counts on through them. The iteration before
       /// the first one of the current solve.
       unsigned int budget_start = 0;
-      /// Lagged quantities are updated within the solve once the residual
-      /// is below this (a fraction of the first residual after the step's
-      /// predictor or after the last update); negative: to be set from the
-      /// next residual; zero: no update before convergence.
+      /// After a shortened step, lagged quantities are updated within the
+      /// solve once the residual is below this (a fraction of the first
+      /// residual after the step's predictor or after the last update);
+      /// negative: to be set from the next residual; zero: after full steps
+      /// only.
       double early_lag_residual = -1.;
-      /// The lagged quantities follow Newton's iterates: they are taken
-      /// again after every full Newton step (a fixed point iterated
-      /// together with Newton's), not only once the residual has fallen to
-      /// early_lag_reduction of the first one of the current equations.
-      /// Set at the start of a solve and after each update; cleared when an
-      /// update changed nothing.
-      bool lag_each_iteration = false;
       /// The trust region's radius (NaN until the first trust-region
       /// iteration of the solve): kept through the load step.
       double trust_radius = std::numeric_limits<double>::quiet_NaN();
@@ -333,6 +327,14 @@ namespace hyperelastic
       /// asks for (set after the first iteration).
       double loose_reduction = 0.;
       double loose_target    = 0.;
+      /// The residual, of the equations the next iteration solves, at the
+      /// current iterate: the last row's residual, or after a lagged update
+      /// the new equations' (NaN: not known).
+      double equations_residual = std::numeric_limits<double>::quiet_NaN();
+      /// The same at the point the last iteration started from: with the
+      /// residual it reached, the Eisenstat-Walker ratio of one set of
+      /// equations.
+      double step_start_residual = std::numeric_limits<double>::quiet_NaN();
     };
 
     /// One iteration from the current iterate: the projection @p policy
@@ -412,16 +414,19 @@ namespace hyperelastic
 
     /// The lagged quantities changed at iteration @p iteration: the
     /// current iterate's energy is unknown, the new equations get a fresh
-    /// budget and their own early-update threshold; the table says so.
+    /// budget and their own early-update threshold, and their residual at
+    /// the iterate is taken from @p system; the table says so.
     void
-    lagged_quantities_updated(unsigned int iteration, SolveState &state) const;
+    lagged_quantities_updated(NonlinearSystem &system,
+                              unsigned int     iteration,
+                              SolveState      &state) const;
 
-    /// Before convergence: updates the system's lagged quantities once the
-    /// residual has fallen to early_lag_reduction times the first one of
-    /// the current equations (SolveState::early_lag_residual), and after
+    /// Before convergence: updates the system's lagged quantities after
     /// every full step (@p full_step: the line search accepted step length
-    /// 1) while SolveState::lag_each_iteration holds; the new
-    /// equations get a fresh budget from @p iteration on.
+    /// 1), and after a shortened one once the residual has fallen to
+    /// early_lag_reduction times the first one of the current equations
+    /// (SolveState::early_lag_residual); the new equations get a fresh
+    /// budget from @p iteration on.
     void
     update_lagged_early(NonlinearSystem     &system,
                         const ResidualNorms &norms,
@@ -434,9 +439,12 @@ namespace hyperelastic
     static constexpr double early_lag_reduction = 0.1;
 
     /// The Eisenstat-Walker forcing term for the next linear solve, from the
-    /// rows so far of this Newton solve (0 for an exact solve).
+    /// rows so far of this Newton solve and the residual the last row's
+    /// iteration started from, of the equations it solved (0 for an exact
+    /// solve).
     double
     forcing_term(const std::vector<NewtonIteration> &history,
+                 double                              step_start_residual,
                  double                              residual_target) const;
 
     /// Backtracks from alpha = 1 until the trial is admissible and, if
