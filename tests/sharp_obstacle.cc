@@ -22,7 +22,9 @@
 // Usage: mpirun -np N sharp_obstacle CASE DIM
 #include <deal.II/base/mpi.h>
 
+#include <hyperelastic/contact/barrier_settings.h>
 #include <hyperelastic/contact/mesh_obstacle_pairs.h>
+#include <hyperelastic/contact/obstacle_surface.h>
 #include <hyperelastic/mesh/mesh_distribution.h>
 
 #include "support/box_discretisation.h"
@@ -37,6 +39,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -171,10 +174,16 @@ namespace
     parameters.obstacles.push_back(meshed_obstacle(
       write_surface<dim>("fd_obstacle_" + std::to_string(dim) + "d.msh", s),
       dim));
-    const MeshObstaclePairs<dim> term(parameters,
-                                      {},
-                                      box.dof_handler,
-                                      lame_parameters(1., 1.));
+    // The surface and settings ObstacleContact would hand over (d_hat is
+    // given: the body's diagonal does not enter).
+    const ObstacleParameters &o = parameters.obstacles[0];
+    const MeshObstaclePairs<dim> term(
+      parameters,
+      {},
+      box.dof_handler,
+      {std::make_shared<const ObstacleSurface<dim>>(o.file,
+                                                    o.subsection + "/File")},
+      barrier_settings(parameters, 1., lame_parameters(1., 1.), false));
     const std::string tag = std::to_string(dim) + "D " + name + ": ";
 
     VectorType u(box.owned, comm), u_ghosted(box.owned, box.relevant, comm);

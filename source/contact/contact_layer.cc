@@ -190,13 +190,15 @@ namespace hyperelastic
         self_term ? &self_term->settings() : nullptr));
     // A meshed obstacle's sharp corners and edges against the body's faces
     // and edges.
+    // They use the obstacles' surfaces and barrier settings.
     MeshObstaclePairs<dim> *corners = nullptr;
-    if (MeshObstaclePairs<dim>::wanted(parameters))
-      corners = add(std::make_unique<MeshObstaclePairs<dim>>(parameters,
-                                                             setup.constants,
-                                                             setup.dof_handler,
-                                                             setup.moduli,
-                                                             setup.dynamic));
+    if (obstacles && MeshObstaclePairs<dim>::wanted(parameters))
+      corners = add(std::make_unique<MeshObstaclePairs<dim>>(
+        parameters,
+        setup.constants,
+        setup.dof_handler,
+        obstacles->obstacle_surfaces(),
+        obstacles->settings()));
     if (self_term)
       self = add(std::move(self_term));
     if (!obstacles && !self)

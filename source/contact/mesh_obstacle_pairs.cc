@@ -55,10 +55,12 @@ namespace hyperelastic
     const ContactParameters             &parameters,
     const std::map<std::string, double> &constants,
     const DoFHandler<dim>               &dof_handler,
-    const LameParameters                &moduli,
-    const bool                           dynamic)
+    const std::vector<std::shared_ptr<const ObstacleSurface<dim>>> &surfaces,
+    const BarrierSettings               &settings)
       : comm(dof_handler.get_communicator())
       , my_subdomain(dof_handler.get_triangulation().locally_owned_subdomain())
+      , d_hat(settings.d_hat)
+      , kappa(settings.kappa)
   {
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     ghost_buffer.reinit(dof_handler.locally_owned_dofs(), relevant, comm);
@@ -67,35 +69,8 @@ namespace hyperelastic
         motions.push_back(parse_vector_function<dim>(o.motion,
                                                      constants,
                                                      o.subsection + "/Motion"));
-    find_features(parameters);
+    find_features(parameters, surfaces);
     gather_body(dof_handler);
-
-    // d_hat and kappa as ObstacleContact's: from the bounding box of the
-    // owned cells' vertices over all ranks.
-    Point<dim> lower, upper;
-    for (unsigned int d = 0; d < dim; ++d)
-      lower[d] = std::numeric_limits<double>::max(),
-      upper[d] = -std::numeric_limits<double>::max();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              lower[d] = std::min(lower[d], cell->vertex(v)[d]);
-              upper[d] = std::max(upper[d], cell->vertex(v)[d]);
-            }
-    double diagonal = 0.;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        const double extent = Utilities::MPI::max(upper[d], comm) -
-                              Utilities::MPI::min(lower[d], comm);
-        diagonal += extent * extent;
-      }
-    const BarrierSettings settings =
-      barrier_settings(parameters, std::sqrt(diagonal), moduli, dynamic);
-    d_hat = settings.d_hat;
-    kappa = settings.kappa;
-
     check_start();
   }
 
@@ -104,16 +79,21 @@ namespace hyperelastic
 
   template <int dim>
   void
-  MeshObstaclePairs<dim>::find_features(const ContactParameters &parameters)
+  MeshObstaclePairs<dim>::find_features(
+    const ContactParameters &parameters,
+    const std::vector<std::shared_ptr<const ObstacleSurface<dim>>> &surfaces)
   {
-    for (const ObstacleParameters &o : parameters.obstacles)
+    AssertDimension(surfaces.size(), parameters.obstacles.size());
+    for (unsigned int k = 0; k < parameters.obstacles.size(); ++k)
       {
+        const ObstacleParameters &o = parameters.obstacles[k];
         if (o.type != ObstacleType::mesh)
           continue;
+        Assert(surfaces[k] != nullptr, ExcInternalError());
+        const ObstacleSurface<dim> &surface = *surfaces[k];
         const unsigned int m = numbers.size();
         numbers.push_back(o.number);
         sections.push_back(o.subsection);
-        const ObstacleSurface<dim> surface(o.file, o.subsection + "/File");
         // The points where they are at t = 0: the file's coordinates
         // shifted by Point and by the motion at t = 0.
         Tensor<1, dim> shift;

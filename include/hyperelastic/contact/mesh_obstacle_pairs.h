@@ -45,9 +45,11 @@
 #include <hyperelastic/assembly/energy_term.h>
 #include <hyperelastic/assembly/term_capabilities.h>
 #include <hyperelastic/base/timed_section.h>
+#include <hyperelastic/contact/barrier_settings.h>
 #include <hyperelastic/contact/contact_measures.h>
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/contact/end_state_map.h>
+#include <hyperelastic/contact/obstacle_surface.h>
 #include <hyperelastic/contact/primitive_distance.h>
 #include <hyperelastic/materials/material.h>
 
@@ -72,16 +74,20 @@ namespace hyperelastic
     static bool
     wanted(const ContactParameters &parameters);
 
-    /// Reads the meshed obstacles of @p parameters, finds their sharp
-    /// vertices and edges and the body's boundary faces and edges this
-    /// rank needs; d_hat and kappa as ObstacleContact sets them. A corner
-    /// or edge of an obstacle through a body face at t = 0 is an InputError
-    /// naming the obstacle. Collective.
-    MeshObstaclePairs(const ContactParameters             &parameters,
-                      const std::map<std::string, double> &constants,
-                      const dealii::DoFHandler<dim>       &dof_handler,
-                      const LameParameters                &moduli,
-                      bool                                 dynamic = false);
+    /// Finds the sharp vertices and edges of the meshed obstacles of
+    /// @p parameters (their surfaces in @p surfaces, one entry per
+    /// obstacle, null for the others: those ObstacleContact read) and the
+    /// body's boundary faces and edges this rank needs; d_hat and kappa
+    /// are @p settings, the ones ObstacleContact uses (with self contact,
+    /// the reference gaps' d_hat). A corner or edge of an obstacle through
+    /// a body face at t = 0 is an InputError naming the obstacle.
+    /// Collective.
+    MeshObstaclePairs(
+      const ContactParameters             &parameters,
+      const std::map<std::string, double> &constants,
+      const dealii::DoFHandler<dim>       &dof_handler,
+      const std::vector<std::shared_ptr<const ObstacleSurface<dim>>> &surfaces,
+      const BarrierSettings               &settings);
     ~MeshObstaclePairs() override;
 
     std::string
@@ -233,7 +239,9 @@ namespace hyperelastic
     void
     gather_body(const dealii::DoFHandler<dim> &dof_handler);
     void
-    find_features(const ContactParameters &parameters);
+    find_features(
+      const ContactParameters &parameters,
+      const std::vector<std::shared_ptr<const ObstacleSurface<dim>>> &surfaces);
     void
     check_start() const;
 

@@ -189,6 +189,14 @@ namespace hyperelastic
       return shared_settings;
     }
 
+    /// The surfaces of the meshed obstacles, one entry per obstacle of the
+    /// scene (null for the other types), read once from their files.
+    const std::vector<std::shared_ptr<const ObstacleSurface<dim>>> &
+    obstacle_surfaces() const
+    {
+      return surfaces;
+    }
+
     double
     barrier_stiffness() const
     {
