@@ -79,14 +79,11 @@ namespace
   {
     return block(0., "1") +
            subsection("Loading", entry("Number of load steps", "10")) +
-           subsection("Contact",
-                      entry("Barrier distance", "0.002") +
-                        plane(1, "0, 0, -0.001", "0, 0, 1", "", mu) +
-                        plane(2,
-                              "0, 0, 1.001",
-                              "0, 0, -1",
-                              "0; 0; -0.3*t",
-                              mu));
+           subsection(
+             "Contact",
+             entry("Barrier distance", "0.002") +
+               plane(1, "0, 0, -0.001", "0, 0, 1", "", mu) +
+               plane(2, "0, 0, 1.001", "0, 0, -1", "0; 0; -0.3*t", mu));
   }
 
   /// Newton iterations over all steps of a run.
@@ -104,9 +101,9 @@ namespace
   void
   compare(Checker &checker, const std::string &name, Scene &&scene)
   {
-    const auto frictionless = run_scene<3>(scene(0.));
-    const auto with         = run_scene<3>(scene(0.5));
-    const auto &last        = with->summaries().back();
+    const auto  frictionless = run_scene<3>(scene(0.));
+    const auto  with         = run_scene<3>(scene(0.5));
+    const auto &last         = with->summaries().back();
     checker.close(name + ", mu = 0.5: completed to the end",
                   last.load_factor,
                   frictionless->summaries().back().load_factor,

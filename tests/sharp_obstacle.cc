@@ -176,7 +176,7 @@ namespace
       dim));
     // The surface and settings ObstacleContact would hand over (d_hat is
     // given: the body's diagonal does not enter).
-    const ObstacleParameters &o = parameters.obstacles[0];
+    const ObstacleParameters    &o = parameters.obstacles[0];
     const MeshObstaclePairs<dim> term(
       parameters,
       {},

@@ -193,12 +193,12 @@ namespace hyperelastic
     // They use the obstacles' surfaces and barrier settings.
     MeshObstaclePairs<dim> *corners = nullptr;
     if (obstacles && MeshObstaclePairs<dim>::wanted(parameters))
-      corners = add(std::make_unique<MeshObstaclePairs<dim>>(
-        parameters,
-        setup.constants,
-        setup.dof_handler,
-        obstacles->obstacle_surfaces(),
-        obstacles->settings()));
+      corners = add(
+        std::make_unique<MeshObstaclePairs<dim>>(parameters,
+                                                 setup.constants,
+                                                 setup.dof_handler,
+                                                 obstacles->obstacle_surfaces(),
+                                                 obstacles->settings()));
     if (self_term)
       self = add(std::move(self_term));
     if (!obstacles && !self)

@@ -52,11 +52,11 @@ namespace hyperelastic
 
   template <int dim>
   MeshObstaclePairs<dim>::MeshObstaclePairs(
-    const ContactParameters             &parameters,
-    const std::map<std::string, double> &constants,
-    const DoFHandler<dim>               &dof_handler,
+    const ContactParameters                                        &parameters,
+    const std::map<std::string, double>                            &constants,
+    const DoFHandler<dim>                                          &dof_handler,
     const std::vector<std::shared_ptr<const ObstacleSurface<dim>>> &surfaces,
-    const BarrierSettings               &settings)
+    const BarrierSettings                                          &settings)
       : comm(dof_handler.get_communicator())
       , my_subdomain(dof_handler.get_triangulation().locally_owned_subdomain())
       , d_hat(settings.d_hat)
@@ -80,7 +80,7 @@ namespace hyperelastic
   template <int dim>
   void
   MeshObstaclePairs<dim>::find_features(
-    const ContactParameters &parameters,
+    const ContactParameters                                        &parameters,
     const std::vector<std::shared_ptr<const ObstacleSurface<dim>>> &surfaces)
   {
     AssertDimension(surfaces.size(), parameters.obstacles.size());
@@ -320,8 +320,8 @@ namespace hyperelastic
         x[i] = vertices[i].X;
         for (unsigned int d = 0; d < dim; ++d)
           x[i][d] += u(vertices[i].dofs[d]);
-        if (end_state.c != 1.)
-          x[i] = end_state.end_position(start_positions[i], x[i]);
+        if (clock.end_state.c != 1.)
+          x[i] = clock.end_state.end_position(start_positions[i], x[i]);
       }
     return x;
   }
@@ -454,7 +454,7 @@ namespace hyperelastic
                                           double *min_distance) const
   {
     const std::vector<Point<dim>> x = body_at(u);
-    const std::vector<Point<dim>> y = obstacle_at(obstacle_time(t));
+    const std::vector<Point<dim>> y = obstacle_at(clock.obstacle_time(t));
     bool                          touching = false;
     double                        closest  = d_hat;
     for (const Pair &pair : candidates(x, y, nullptr, nullptr, d_hat, false))
@@ -480,13 +480,13 @@ namespace hyperelastic
           }
         if (b.distance >= d_hat)
           continue;
-        b.energy *= end_state.energy_factor();
+        b.energy *= clock.end_state.energy_factor();
         for (double &g : b.gradient)
-          g *= end_state.gradient_factor();
+          g *= clock.end_state.gradient_factor();
         if (order == 2)
           for (auto &row : b.hessian)
             for (double &v : row)
-              v *= end_state.hessian_factor();
+              v *= clock.end_state.hessian_factor();
         f(pair, b);
       }
     if (min_distance)
@@ -581,12 +581,12 @@ namespace hyperelastic
     // the linearization carries it as a prescribed motion of the pairs'
     // obstacle points (end-state coordinates, hence / c).
     std::vector<Tensor<1, dim>> rest(obstacle_points.size());
-    if (reached < end_time(t))
+    if (clock.on_the_way(t))
       {
-        const std::vector<Point<dim>> now = obstacle_at(reached),
-                                      end = obstacle_at(end_time(t));
+        const std::vector<Point<dim>> now = obstacle_at(clock.reached),
+                                      end = obstacle_at(clock.end_time(t));
         for (unsigned int i = 0; i < rest.size(); ++i)
-          rest[i] = (end[i] - now[i]) / end_state.c;
+          rest[i] = (end[i] - now[i]) / clock.end_state.c;
       }
     const bool project = projection == TangentProjection::every_point;
     std::vector<types::global_dof_index> rhs_rows, columns;
@@ -670,12 +670,12 @@ namespace hyperelastic
     std::vector<Tensor<1, dim>> p(vertices.size());
     for (unsigned int i = 0; i < vertices.size(); ++i)
       for (unsigned int d = 0; d < dim; ++d)
-        p[i][d] = end_state.c * direction(vertices[i].dofs[d]);
-    const std::vector<Point<dim>> y = obstacle_at(obstacle_time(t));
+        p[i][d] = clock.end_state.c * direction(vertices[i].dofs[d]);
+    const std::vector<Point<dim>> y = obstacle_at(clock.obstacle_time(t));
     std::vector<Tensor<1, dim>>   q(y.size());
-    if (reached < end_time(t))
+    if (clock.on_the_way(t))
       {
-        const std::vector<Point<dim>> end = obstacle_at(end_time(t));
+        const std::vector<Point<dim>> end = obstacle_at(clock.end_time(t));
         for (unsigned int i = 0; i < y.size(); ++i)
           q[i] = end[i] - y[i];
       }
@@ -701,9 +701,7 @@ namespace hyperelastic
   void
   MeshObstaclePairs<dim>::begin_step(const VectorType &u, const double t_start)
   {
-    step_start = t_start;
-    reached    = t_start;
-    end_state  = EndStateMap();
+    clock.begin_step(t_start);
     start_positions = body_at(u);
   }
 
@@ -711,13 +709,13 @@ namespace hyperelastic
   bool
   MeshObstaclePairs<dim>::prepare_motion(const double t)
   {
-    const double t_end = end_time(t);
-    if (!(reached < t_end))
+    const double t_end = clock.end_time(t);
+    if (!(clock.reached < t_end))
       return false;
     for (unsigned int m = 0; m < motions.size(); ++m)
-      if (placement(m, reached).shift != placement(m, t_end).shift)
+      if (placement(m, clock.reached).shift != placement(m, t_end).shift)
         return true;
-    reached = t_end;
+    clock.reached = t_end;
     return false;
   }
 
@@ -725,9 +723,7 @@ namespace hyperelastic
   void
   MeshObstaclePairs<dim>::advance(const double alpha, const double t)
   {
-    const double t_end = end_time(t);
-    if (reached < t_end)
-      reached = alpha >= 1. ? t_end : reached + alpha * (t_end - reached);
+    clock.advance(alpha, t);
   }
 
   template <int dim>

@@ -269,15 +269,16 @@ namespace hyperelastic
         p.radius   = o.radius;
         p.friction = o.friction;
         p.surface  = surfaces[k].get();
-        if (std::isfinite(reached) && o.friction > 0.)
+        if (std::isfinite(clock.reached) && o.friction > 0.)
           {
-            const Tensor<1, dim> w_start = offset(k, step_start);
+            const Tensor<1, dim> w_start = offset(k, clock.step_start);
             p.shift                      = w - w_start;
             if (p.turns)
               {
                 p.start_point = to_point<dim>(o.point) + w_start;
                 p.turn =
-                  rotation_about<dim>(p.axis, p.angle - angle(k, step_start));
+                  rotation_about<dim>(p.axis,
+                                      p.angle - angle(k, clock.step_start));
               }
           }
       }
@@ -355,8 +356,8 @@ namespace hyperelastic
     Point<dim>    x = v.X;
     for (unsigned int d = 0; d < dim; ++d)
       x[d] += u(v.dofs[d]);
-    if (end_state.c != 1.)
-      x = end_state.end_position(start_positions[a], x);
+    if (clock.end_state.c != 1.)
+      x = clock.end_state.end_position(start_positions[a], x);
     return x;
   }
 
@@ -446,10 +447,10 @@ namespace hyperelastic
     if (lagged.empty() || !has_friction())
       return;
     const auto                scope = timed_section(timer, "contact");
-    const std::vector<Placed> where = placed(obstacle_time(t));
+    const std::vector<Placed> where = placed(clock.obstacle_time(t));
     const double              eps =
-      friction_smoothing(end_time(t) - std::min(step_start, t));
-    const double                         since_start = elapsed(t);
+      friction_smoothing(clock.end_time(t) - std::min(clock.step_start, t));
+    const double                         since_start = clock.elapsed(t);
     std::vector<types::global_dof_index> rows;
     std::vector<double>                  values;
     for (unsigned int a = 0; a < vertices.size(); ++a)
@@ -485,7 +486,7 @@ namespace hyperelastic
               {
                 rows.push_back(vertices[a].dofs[d]);
                 values.push_back(trial(vertices[a].dofs[d]) -
-                                 back * along[d] / end_state.c);
+                                 back * along[d] / clock.end_state.c);
               }
             break;
           }
@@ -503,10 +504,10 @@ namespace hyperelastic
                                       const bool        with_stiffness,
                                       const F          &f) const
   {
-    const std::vector<Placed> where = placed(obstacle_time(t));
+    const std::vector<Placed> where = placed(clock.obstacle_time(t));
     const double              eps =
-      friction_smoothing(end_time(t) - std::min(step_start, t));
-    const double since_start = elapsed(t);
+      friction_smoothing(clock.end_time(t) - std::min(clock.step_start, t));
+    const double since_start = clock.elapsed(t);
     bool         crossed     = false;
     for (unsigned int a = 0; a < vertices.size(); ++a)
       {
@@ -517,9 +518,9 @@ namespace hyperelastic
               pair(a, k, x, where[k], eps, since_start, with_stiffness);
             // The potential w V(x_end) / c in the solved state: gradient
             // w V'(x_end), Hessian w c V''(x_end).
-            p.energy *= end_state.energy_factor();
-            p.force *= end_state.gradient_factor();
-            p.stiffness *= end_state.hessian_factor();
+            p.energy *= clock.end_state.energy_factor();
+            p.force *= clock.end_state.gradient_factor();
+            p.stiffness *= clock.end_state.hessian_factor();
             crossed = crossed || !(p.distance > 0.);
             f(a, k, p);
           }
@@ -578,17 +579,17 @@ namespace hyperelastic
     VectorType                      &rhs) const
   {
     const auto scope = timed_section(timer, "contact");
-    // While the obstacles are on their way (Placed at obstacle_time(t)),
-    // the linearization carries the rest of their motion w_ak (of the
-    // obstacle's point at vertex a): the pair's forces depend on x - w, so
-    // the right-hand side gains K w on the pair's rows (the obstacle drags
-    // the vertices it touches).
-    const bool          moving = reached < end_time(t);
+    // While the obstacles are on their way (Placed at the clock's
+    // obstacle_time(t)), the linearization carries the rest of their motion
+    // w_ak (of the obstacle's point at vertex a): the pair's forces depend on x
+    // - w, so the right-hand side gains K w on the pair's rows (the obstacle
+    // drags the vertices it touches).
+    const bool          moving = clock.on_the_way(t);
     std::vector<Placed> now, end;
     if (moving)
       {
-        now = placed(reached);
-        end = placed(end_time(t));
+        now = placed(clock.reached);
+        end = placed(clock.end_time(t));
       }
     FullMatrix<double>                   block(dim, dim);
     std::vector<types::global_dof_index> dofs(dim);
@@ -614,8 +615,9 @@ namespace hyperelastic
         // K w, K the pair's stiffness in the end state.
         if (!moving)
           return;
-        const Tensor<1, dim> pull =
-          p.stiffness * carried(now[k], end[k], position(a, u)) / end_state.c;
+        const Tensor<1, dim> pull = p.stiffness *
+                                    carried(now[k], end[k], position(a, u)) /
+                                    clock.end_state.c;
         for (unsigned int i = 0; i < dim; ++i)
           if (pull[i] != 0. && !constraints.is_constrained(dofs[i]))
             {
@@ -650,10 +652,10 @@ namespace hyperelastic
     const auto scope = timed_section(timer, "contact");
     // The obstacles move jointly with the body: from where they stand to
     // their place at t (a straight way in between).
-    const std::vector<Placed> now = placed(obstacle_time(t));
+    const std::vector<Placed> now = placed(clock.obstacle_time(t));
     std::vector<Placed>       end = now;
-    if (reached < end_time(t))
-      end = placed(end_time(t));
+    if (clock.on_the_way(t))
+      end = placed(clock.end_time(t));
     double alpha = 1.;
     for (unsigned int a = 0; a < vertices.size(); ++a)
       {
@@ -666,7 +668,7 @@ namespace hyperelastic
             // R(-s turn) (x - p + s w) over s in [0, 1].
             Tensor<1, dim> p = now[k].point - end[k].point;
             for (unsigned int c = 0; c < dim; ++c)
-              p[c] += end_state.c * direction(v.dofs[c]);
+              p[c] += clock.end_state.c * direction(v.dofs[c]);
             const double         turn   = end[k].angle - now[k].angle;
             const Tensor<1, dim> offset = x - now[k].point;
             const Tensor<1, 3>  &axis   = now[k].axis;
@@ -776,10 +778,8 @@ namespace hyperelastic
   void
   ObstacleContact<dim>::begin_step(const VectorType &u, const double t_start)
   {
-    step_start      = t_start;
-    reached         = t_start;
+    clock.begin_step(t_start);
     lagging.begin_step();
-    end_state       = EndStateMap();
     start_positions.resize(vertices.size());
     for (unsigned int a = 0; a < vertices.size(); ++a)
       start_positions[a] = position(a, u);
@@ -790,15 +790,15 @@ namespace hyperelastic
   bool
   ObstacleContact<dim>::prepare_motion(const double t)
   {
-    const double t_end = end_time(t);
-    if (!(reached < t_end))
+    const double t_end = clock.end_time(t);
+    if (!(clock.reached < t_end))
       return false;
-    const std::vector<Placed> now = placed(reached), end = placed(t_end);
+    const std::vector<Placed> now = placed(clock.reached), end = placed(t_end);
     for (unsigned int k = 0; k < obstacles.size(); ++k)
       if (now[k].point != end[k].point || now[k].angle != end[k].angle)
         return true;
     // Standing still: nothing to carry.
-    reached = t_end;
+    clock.reached = t_end;
     return false;
   }
 
@@ -806,9 +806,7 @@ namespace hyperelastic
   void
   ObstacleContact<dim>::advance(const double alpha, const double t)
   {
-    const double t_end = end_time(t);
-    if (reached < t_end)
-      reached = alpha >= 1. ? t_end : reached + alpha * (t_end - reached);
+    clock.advance(alpha, t);
   }
 
   template <int dim>
@@ -819,8 +817,8 @@ namespace hyperelastic
   {
     if (!has_friction() || !lagging.may_update())
       return LaggedUpdate::unchanged;
-    std::vector<Lagged> next    = lagged_at(u, obstacle_time(t));
-    const double        since_start = elapsed(t);
+    std::vector<Lagged> next        = lagged_at(u, clock.obstacle_time(t));
+    const double        since_start = clock.elapsed(t);
     double              change = 0., largest = 0.;
     for (unsigned int i = 0; i < next.size(); ++i)
       {
@@ -839,7 +837,7 @@ namespace hyperelastic
   {
     // Quasi-static only: in dynamics the step is short, lambda_n is close,
     // and the difference of two states carries their vibrations.
-    if (dynamic || !has_friction() || !(t_before < step_start))
+    if (dynamic || !has_friction() || !(t_before < clock.step_start))
       return;
     // The positions of the state before, with the obstacles where they
     // stood then (the end-state map is the identity between steps).
@@ -847,7 +845,7 @@ namespace hyperelastic
     for (unsigned int i = 0; i < lagged.size(); ++i)
       if (lagged[i].normal_force > 0. && before[i].normal_force > 0.)
         lagged[i].rate = (lagged[i].normal_force - before[i].normal_force) /
-                         (step_start - t_before);
+                         (clock.step_start - t_before);
   }
 
   template <int dim>

@@ -126,9 +126,9 @@ namespace hyperelastic
     // different equations, and their ratio measures the update, not how
     // well the linearization predicted the step).
     const double r_new = history.back().residual;
-    const double r_old = std::isfinite(step_start_residual) ?
-                           step_start_residual :
-                           history[history.size() - 2].residual;
+    const double r_old = std::isfinite(step_start_residual)
+                           ? step_start_residual
+                           : history[history.size() - 2].residual;
     if (!(r_old > 0.) || !std::isfinite(r_new))
       return eta_max;
     double       eta      = gamma * (r_new / r_old) * (r_new / r_old);
@@ -371,7 +371,7 @@ namespace hyperelastic
     const double min_J = history.empty() ? nan : history.back().min_J;
     const double eisenstat_walker =
       forcing_term(history, state.step_start_residual, state.target);
-    state.step_start_residual = state.equations_residual;
+    state.step_start_residual     = state.equations_residual;
     const bool   predictor        = state.moving_constraints;
     // The iteration that imposes the prescribed-displacement increment is
     // the load step's predictor: solved fully. So is a projected tangent's:

@@ -48,7 +48,7 @@
 #include <hyperelastic/contact/barrier_settings.h>
 #include <hyperelastic/contact/contact_measures.h>
 #include <hyperelastic/contact/contact_parameters.h>
-#include <hyperelastic/contact/end_state_map.h>
+#include <hyperelastic/contact/obstacle_clock.h>
 #include <hyperelastic/contact/obstacle_surface.h>
 #include <hyperelastic/contact/primitive_distance.h>
 #include <hyperelastic/materials/material.h>
@@ -87,7 +87,7 @@ namespace hyperelastic
       const std::map<std::string, double> &constants,
       const dealii::DoFHandler<dim>       &dof_handler,
       const std::vector<std::shared_ptr<const ObstacleSurface<dim>>> &surfaces,
-      const BarrierSettings               &settings);
+      const BarrierSettings                                          &settings);
     ~MeshObstaclePairs() override;
 
     std::string
@@ -133,7 +133,7 @@ namespace hyperelastic
     void
     set_end_state_map(double c, double weight) override
     {
-      end_state = {c, weight};
+      clock.end_state = {c, weight};
     }
     /// Frictionless: nothing lagged.
     LaggedUpdate
@@ -293,20 +293,6 @@ namespace hyperelastic
                     const F          &f,
                     double           *min_distance = nullptr) const;
 
-    /// The end time of the step solved at @p t and where the obstacles
-    /// stand for it (as ObstacleContact::end_time, obstacle_time).
-    double
-    end_time(double t) const
-    {
-      return std::isfinite(reached) ? step_start + end_state.c * (t - step_start)
-                                    : t;
-    }
-    double
-    obstacle_time(double t) const
-    {
-      return std::min(end_time(t), reached);
-    }
-
     /// The ghosted copy of an owned vector (collective).
     const VectorType &
     ghosted(const VectorType &v) const;
@@ -330,9 +316,9 @@ namespace hyperelastic
     std::vector<BodyPrimitive<dim>>  faces;
     std::vector<BodyPrimitive<2>>    edges;
 
-    EndStateMap                     end_state;
-    double                          step_start = 0.;
-    double reached = std::numeric_limits<double>::infinity();
+    /// The step's start, where the obstacles stand within it and its
+    /// end-state map (as ObstacleContact's).
+    ObstacleClock                   clock;
     std::vector<dealii::Point<dim>> start_positions;
     mutable VectorType              ghost_buffer;
     dealii::TimerOutput            *timer = nullptr;

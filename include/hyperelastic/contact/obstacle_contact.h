@@ -49,15 +49,15 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 
+#include <hyperelastic/assembly/energy_term.h>
+#include <hyperelastic/assembly/term_capabilities.h>
 #include <hyperelastic/base/timed_section.h>
 #include <hyperelastic/contact/barrier_settings.h>
 #include <hyperelastic/contact/contact_measures.h>
 #include <hyperelastic/contact/contact_parameters.h>
-#include <hyperelastic/contact/end_state_map.h>
 #include <hyperelastic/contact/friction_lagging.h>
+#include <hyperelastic/contact/obstacle_clock.h>
 #include <hyperelastic/contact/obstacle_surface.h>
-#include <hyperelastic/assembly/energy_term.h>
-#include <hyperelastic/assembly/term_capabilities.h>
 #include <hyperelastic/materials/material.h>
 
 #include <algorithm>
@@ -136,7 +136,7 @@ namespace hyperelastic
     void
     set_end_state_map(double c, double weight) override
     {
-      end_state = {c, weight};
+      clock.end_state = {c, weight};
     }
     bool
     prepare_motion(double t) override;
@@ -355,31 +355,6 @@ namespace hyperelastic
     dealii::Point<dim>
     position(unsigned int a, const VectorType &u) const;
 
-    /// The end time of the step solved at @p t (t, or its image under the
-    /// end-state map).
-    double
-    end_time(double t) const
-    {
-      return std::isfinite(reached) ? step_start + end_state.c * (t - step_start)
-                                    : t;
-    }
-
-    /// The time from the step's start to the end time of @p t (not
-    /// negative): how far friction's extrapolated lambda has come.
-    double
-    elapsed(double t) const
-    {
-      return std::max(0., end_time(t) - step_start);
-    }
-
-    /// Where the obstacles are evaluated for load factor @p t: at the end
-    /// time, or where they stand on their way within the step.
-    double
-    obstacle_time(double t) const
-    {
-      return std::min(end_time(t), reached);
-    }
-
     const std::vector<ObstacleParameters> obstacles;
     /// The surfaces of the meshed obstacles (null for the others).
     std::vector<std::shared_ptr<const ObstacleSurface<dim>>> surfaces;
@@ -397,15 +372,12 @@ namespace hyperelastic
     /// Friction's lagging updates ('Friction lagging updates' a step).
     FrictionLagging lagging;
 
-    /// The step's start, the obstacle time reached within the step (+inf
-    /// outside a step: the obstacles stand at t), the vertices' positions
-    /// at the start and the lagged friction [a * n_obstacles + k].
-    double step_start = 0.;
-    double reached    = std::numeric_limits<double>::infinity();
+    /// The step's start, where the obstacles stand within it and its
+    /// end-state map; the vertices' positions at the start and the lagged
+    /// friction [a * n_obstacles + k].
+    ObstacleClock                   clock;
     std::vector<dealii::Point<dim>> start_positions;
     std::vector<Lagged>             lagged;
-    /// The step's end-state map (set_end_state_map).
-    EndStateMap end_state;
     dealii::TimerOutput *timer      = nullptr;
   };
 } // namespace hyperelastic
