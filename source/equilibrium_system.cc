@@ -149,16 +149,7 @@ namespace hyperelastic
     // The update of this linearization must satisfy these constraints.
     active_constraints =
       moves_constraints ? &increment_constraints : &homogeneous_constraints;
-    elasticity->assemble_system(u_ghosted,
-                                current_load_factor,
-                                *active_constraints,
-                                tangent,
-                                rhs,
-                                projection);
-    if (damping.active())
-      damping.add_to_system(u_ghosted, tangent, rhs);
-    if (unheld)
-      unheld->regularize(tangent);
+    assemble_linearization_into(*active_constraints, tangent, rhs, projection);
     predictor_linearization = moves_constraints || moves_terms;
     return predictor_linearization;
   }
@@ -220,16 +211,10 @@ namespace hyperelastic
       TimerOutput::Scope scope(parts.timer, "assembly");
       VectorType         unused_rhs(rhs);
       renew_extension();
-      elasticity->assemble_system(u_ghosted,
-                                  current_load_factor,
-                                  *active_constraints,
+      assemble_linearization_into(*active_constraints,
                                   extension,
                                   unused_rhs,
                                   TangentProjection::every_point);
-      if (damping.active())
-        damping.add_to_system(u_ghosted, extension, unused_rhs);
-      if (unheld)
-        unheld->regularize(extension);
     }
     TimerOutput::Scope scope(parts.timer, "preconditioner setup");
     parts.linear_solver.prepare(extension);
@@ -764,16 +749,26 @@ namespace hyperelastic
   {
     TimerOutput::Scope scope(parts.timer, "assembly");
     active_constraints = &homogeneous_constraints;
-    elasticity->assemble_system(u_ghosted,
-                                current_load_factor,
-                                homogeneous_constraints,
+    assemble_linearization_into(homogeneous_constraints,
                                 tangent,
                                 rhs,
                                 TangentProjection::none);
+  }
+
+  template <int dim>
+  void
+  EquilibriumSystem<dim>::assemble_linearization_into(
+    const AffineConstraints<double> &constraints,
+    MatrixType                      &matrix,
+    VectorType                      &rhs,
+    const TangentProjection          projection)
+  {
+    elasticity->assemble_system(
+      u_ghosted, current_load_factor, constraints, matrix, rhs, projection);
     if (damping.active())
-      damping.add_to_system(u_ghosted, tangent, rhs);
+      damping.add_to_system(u_ghosted, matrix, rhs);
     if (unheld)
-      unheld->regularize(tangent);
+      unheld->regularize(matrix);
   }
 
   template <int dim>

@@ -246,6 +246,17 @@ namespace hyperelastic
     void
     constrain_to_pins(double tolerance, VectorType &x, unsigned int &iterations);
 
+    /// The linearization at u_ghosted into @p matrix and @p rhs: the load
+    /// terms' (ElasticityOperator::assemble_system with @p constraints and
+    /// @p projection), plus the snap damping where it acts, regularized
+    /// for unheld bodies. Collective.
+    void
+    assemble_linearization_into(
+      const dealii::AffineConstraints<double> &constraints,
+      MatrixType                              &matrix,
+      VectorType                              &rhs,
+      TangentProjection                        projection);
+
     /// (Re)builds the tangent's sparsity: the mesh's couplings and the load
     /// terms' (CouplingTerm::add_couplings). Collective.
     void

@@ -38,13 +38,12 @@ namespace hyperelastic
     force.compress(VectorOperation::insert);
   }
 
-  double
+  void
   SnapDamping::add_forces(const VectorType &u, VectorType &forces) const
   {
     VectorType force;
     damping_force(u, force);
     forces += force;
-    return energy(u);
   }
 
   double

@@ -46,8 +46,8 @@ namespace hyperelastic
     }
 
     /// Adds c D (@p u - w) to @p forces (owned entries of both; @p u may
-    /// have ghost entries) and returns the damping energy at @p u.
-    double
+    /// have ghost entries).
+    void
     add_forces(const VectorType &u, VectorType &forces) const;
 
     /// The damping energy c/2 |@p u - w|_D^2 (collective).
