@@ -7,6 +7,7 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/formulation/formulation_registry.h>
+#include <hyperelastic/parameter_checks.h>
 #include <hyperelastic/parameters.h>
 
 #include <fstream>
@@ -37,10 +38,10 @@ namespace hyperelastic
   Parameters::parse(ParameterHandler &prm, const std::string &scene_folder)
   {
     problem.parse(prm);
-    mesh.parse(prm, scene_folder);
+    mesh.parse(prm, scene_folder, problem.dimension);
     material.parse(prm);
     regions = RegionParameters::parse_all(prm);
-    loading.parse(prm);
+    loading.parse(prm, problem.dimension);
     newton.parse(prm);
     load_stepping.parse(prm);
     linear_solver.parse(prm);
@@ -85,7 +86,7 @@ namespace hyperelastic
         });
       }
     check_arc_length(load_stepping, time_integration, contact, problem);
-    output.check_checkpoints(load_stepping, time_integration);
+    check_checkpoints(output, load_stepping, time_integration);
     if (output.write_mesh)
       {
         if (mesh.source != MeshSource::surface)

@@ -11,6 +11,8 @@
 // its hierarchy, so that it and a restart both build a new one at the next
 // solve and go on alike.
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/dynamics/time_stepping.h>
+#include <hyperelastic/equilibrium_system.h>
 #include <hyperelastic/output/checkpoint_file.h>
 #include <hyperelastic/problem.h>
 
@@ -26,10 +28,10 @@ namespace hyperelastic
   {
     std::ostringstream text;
     text << "dimension: " << dim << "\n"
-         << "cells: " << triangulation->n_global_active_cells() << "\n"
-         << "unknowns: " << dof_handler.n_dofs() << "\n"
-         << "element: " << formulation->element_description() << "\n"
-         << "model: " << material->name() << "\n"
+         << "cells: " << model.triangulation->n_global_active_cells() << "\n"
+         << "unknowns: " << model.dof_handler.n_dofs() << "\n"
+         << "element: " << model.formulation->element_description() << "\n"
+         << "model: " << model.material->name() << "\n"
          << "formulation: " << parameters.problem.formulation << "\n"
          << "time integration: "
          << (parameters.time_integration.dynamic()
@@ -38,8 +40,9 @@ namespace hyperelastic
          << "\n"
          << "MPI ranks: " << Utilities::MPI::n_mpi_processes(comm) << "\n";
     for (unsigned int r = 0; r < parameters.regions.size(); ++r)
-      text << parameters.regions[r].name() << ": " << region_models[r]->name()
-           << ", " << cell_regions.n_cells[r + 1] << " cells\n";
+      text << parameters.regions[r].name() << ": "
+           << model.region_models[r]->name() << ", "
+           << model.cell_regions.n_cells[r + 1] << " cells\n";
     return text.str();
   }
 
@@ -62,12 +65,12 @@ namespace hyperelastic
         common.put(file);
       }
     common.put(writer->packed_xdmf_entries());
-    common.put_count(linear_solver.n_preconditioner_setups());
-    common.put_count(linear_solver.n_preconditioner_refreshes());
+    common.put_count(linear_solver->n_preconditioner_setups());
+    common.put_count(linear_solver->n_preconditioner_refreshes());
     system->save_state(own);
     const std::string file = parameters.output.checkpoint_file();
     hyperelastic::write_checkpoint(file, common, own, comm);
-    linear_solver.forget_preconditioner();
+    linear_solver->forget_preconditioner();
     pcout << "   checkpoint: " << file << " (t = " << step.load_factor
           << ", step " << step.step << ")" << std::endl;
   }
@@ -120,7 +123,7 @@ namespace hyperelastic
     resumed_xdmf                 = parts.common.get_string();
     const unsigned int setups    = parts.common.get_count();
     const unsigned int refreshes = parts.common.get_count();
-    linear_solver.set_setup_counts(setups, refreshes);
+    linear_solver->set_setup_counts(setups, refreshes);
     system->load_state(parts.own);
     pcout << "restart from " << parts.file << ": t = " << resume_point->t
           << " after step " << resume_point->step << std::endl;

@@ -1,7 +1,11 @@
-// Problem's output: the run's header, the lines and CSV row of each converged
-// step, and the frames (VTU/HDF5 fields and surface files).
+// Problem's output: the run's header, the summary, lines and CSV row of each
+// converged step, the frames (VTU/HDF5 fields and surface files), and what
+// the run shows its callers (the solution, the tangent, the counts).
 #include <deal.II/base/mpi.h>
 
+#include <hyperelastic/dynamics/time_stepping.h>
+#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/materials/region_properties.h>
 #include <hyperelastic/problem.h>
 
 #include <chrono>
@@ -16,18 +20,19 @@ namespace hyperelastic
   Problem<dim>::print_header() const
   {
     pcout << "hyperelastic: " << dim << "D" << (dim == 2 ? " plane strain" : "")
-          << ", " << formulation->element_description() << ", "
-          << triangulation->n_global_active_cells() << " cells, "
-          << dof_handler.n_dofs() << " unknowns, "
+          << ", " << model.formulation->element_description() << ", "
+          << model.triangulation->n_global_active_cells() << " cells, "
+          << model.dof_handler.n_dofs() << " unknowns, "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n"
           << "material: " << parameters.material.model
-          << formulation->material_note()
-          << " (mu = " << material->small_strain_moduli().mu
-          << ", lambda = " << material->small_strain_moduli().lambda << ")\n"
-          << "linear solver: " << linear_solver.description() << std::endl;
-    pcout << generated_mesh;
+          << model.formulation->material_note()
+          << " (mu = " << model.material->small_strain_moduli().mu
+          << ", lambda = " << model.material->small_strain_moduli().lambda
+          << ")\n"
+          << "linear solver: " << linear_solver->description() << std::endl;
+    pcout << model.generated_mesh;
     print_regions();
-    for (const BoundaryRegions::Region &region : boundary_regions.regions)
+    for (const BoundaryRegions::Region &region : model.boundary_regions.regions)
       {
         pcout << "boundary region '" << region.condition << "' (";
         for (const std::string &section : region.sections)
@@ -36,11 +41,12 @@ namespace hyperelastic
         pcout << "): boundary id " << region.id << ", " << region.n_faces
               << " faces" << std::endl;
       }
-    if (!elasticity->energy_terms().empty())
+    if (!model.elasticity->energy_terms().empty())
       {
         pcout << "loads:";
-        for (const auto &term : elasticity->energy_terms())
-          pcout << (&term == &elasticity->energy_terms().front() ? " " : ", ")
+        for (const auto &term : model.elasticity->energy_terms())
+          pcout << (&term == &model.elasticity->energy_terms().front() ? " "
+                                                                       : ", ")
                 << term->name()
                 << (term->kind() == TermKind::dead ? " (dead)"
                     : term->kind() == TermKind::conservative
@@ -53,10 +59,12 @@ namespace hyperelastic
         reporter->print_header(pcout.get_stream());
     // Without regions the top-level material; with them each region that
     // has cells.
-    for (unsigned int r = 0; r < materials->n_regions(); ++r)
-      if (r > 0 || parameters.regions.empty() || cell_regions.n_cells[0] > 0)
+    for (unsigned int r = 0; r < model.materials->n_regions(); ++r)
+      if (r > 0 || parameters.regions.empty() ||
+          model.cell_regions.n_cells[0] > 0)
         {
-          const std::string warning = formulation->warning(materials->model(r));
+          const std::string warning =
+            model.formulation->warning(model.materials->model(r));
           if (!warning.empty())
             pcout << (parameters.regions.empty()
                         ? std::string()
@@ -79,7 +87,7 @@ namespace hyperelastic
       return text.str();
     };
     pcout << "regions: region 0 (top-level Material, "
-          << parameters.material.model << ") " << cell_regions.n_cells[0]
+          << parameters.material.model << ") " << model.cell_regions.n_cells[0]
           << " cells";
     for (unsigned int r = 0; r < parameters.regions.size(); ++r)
       {
@@ -88,17 +96,89 @@ namespace hyperelastic
               << (region.material_id >= 0
                     ? "Material id " + std::to_string(region.material_id)
                     : "Cells '" + region.cells + "'")
-              << "): " << region.material.model << moduli(*region_models[r])
-              << ", " << cell_regions.n_cells[r + 1] << " cells";
+              << "): " << region.material.model
+              << moduli(*model.region_models[r]) << ", "
+              << model.cell_regions.n_cells[r + 1] << " cells";
       }
-    if (contact_reporter)
+    if (model.contact_reporter)
       {
-        const LameParameters contact = contact_moduli();
+        const LameParameters contact = boundary_moduli(*model.materials,
+                                                       model.cell_regions,
+                                                       *model.triangulation);
         pcout << "\n  contact defaults from the stiffest region at the "
                  "boundary (mu = "
               << contact.mu << ", lambda = " << contact.lambda << ")";
       }
     pcout << std::endl;
+  }
+
+  template <int dim>
+  unsigned int
+  Problem<dim>::n_secant_predictions() const
+  {
+    return stepping->n_predictions();
+  }
+
+  template <int dim>
+  const MatrixType &
+  Problem<dim>::tangent_matrix() const
+  {
+    return system->tangent_matrix();
+  }
+
+  template <int dim>
+  const VectorType &
+  Problem<dim>::solution() const
+  {
+    return system->solution();
+  }
+
+  template <int dim>
+  StepSummary<dim>
+  Problem<dim>::summarize(const LoadStep &step, const NewtonResult &result)
+  {
+    TimerOutput::Scope scope(timer, "postprocessing");
+    StepSummary<dim>   s;
+    s.step              = step.step;
+    s.load_factor       = system->load_factor();
+    s.load_increment    = step.increment;
+    s.cut_backs         = step.cut_backs;
+    s.newton_iterations = result.iterations();
+    s.linear_iterations = result.linear_iterations();
+    s.backtracks        = result.backtracks();
+    if (parameters.linear_solver.type == LinearSolverType::cg_amg)
+      s.amg_setups = linear_solver->n_preconditioner_setups();
+    s.newton_history = result.history;
+    s.residual       = result.history.back().residual;
+    s.energy =
+      model.elasticity->total_energy(system->solution(), s.load_factor);
+    s.min_J          = system->converged_min_J();
+    s.inverted_cells = system->converged_inverted_cells();
+    const ReportedState state{system->solution(),
+                              system->residual_forces(),
+                              s.load_factor};
+    for (StepReporter<dim> *reporter : reporters)
+      reporter->add_columns(state, s);
+    // Arc length: where the path became unstable.
+    if (parameters.load_stepping.method == LoadControl::arc_length)
+      s.more.push_back({"stability", result.stability});
+    // Regions: the stored energy of each (the top-level Material's cells
+    // are region 0).
+    if (!parameters.regions.empty())
+      {
+        const std::vector<double> energies =
+          model.elasticity->region_energies(system->solution());
+        for (unsigned int r = 0; r < energies.size(); ++r)
+          s.more.push_back(
+            {"energy_region_" +
+               std::to_string(r == 0 ? 0 : parameters.regions[r - 1].number),
+             energies[r]});
+      }
+
+    scope.stop();
+    if (writes_frames() && stepping->writes_fields(step.step, s.load_factor))
+      write_fields(step.step);
+    return s;
   }
 
   template <int dim>
@@ -155,17 +235,21 @@ namespace hyperelastic
   {
     TimerOutput::Scope output_scope(timer, "output");
     CellFields         fields;
-    if (material3d)
-      fields = compute_cell_fields(
-        dof_handler, mapping, *materials, *materials3d, system->solution());
+    if (model.material3d)
+      fields = compute_cell_fields(model.dof_handler,
+                                   model.mapping,
+                                   *model.materials,
+                                   *model.materials3d,
+                                   system->solution());
     if (!parameters.regions.empty())
       {
         // The number k of 'Region k' (0: the top-level Material).
-        fields.region.reinit(triangulation->n_active_cells());
-        for (const auto &cell : triangulation->active_cell_iterators())
+        fields.region.reinit(model.triangulation->n_active_cells());
+        for (const auto &cell : model.triangulation->active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              const unsigned int r = cell_regions(cell->active_cell_index());
+              const unsigned int r =
+                model.cell_regions(cell->active_cell_index());
               fields.region[cell->active_cell_index()] =
                 r == 0 ? 0. : parameters.regions[r - 1].number;
             }
@@ -174,7 +258,7 @@ namespace hyperelastic
       surface->write(n_frames,
                      system->load_factor(),
                      system->solution(),
-                     material3d ? &fields.von_mises : nullptr);
+                     model.material3d ? &fields.von_mises : nullptr);
     ++n_frames;
     if (!parameters.output.write_vtu && !parameters.output.write_hdf5)
       return;
@@ -186,8 +270,8 @@ namespace hyperelastic
       reporter->add_nodal_fields(state, nodal);
     writer->write_fields(step,
                          system->load_factor(),
-                         dof_handler,
-                         mapping,
+                         model.dof_handler,
+                         model.mapping,
                          system->solution(),
                          fields,
                          nodal);
@@ -209,4 +293,20 @@ namespace hyperelastic
   Problem<2>::write_fields(unsigned int);
   template void
   Problem<3>::write_fields(unsigned int);
+  template StepSummary<2>
+  Problem<2>::summarize(const LoadStep &, const NewtonResult &);
+  template StepSummary<3>
+  Problem<3>::summarize(const LoadStep &, const NewtonResult &);
+  template unsigned int
+  Problem<2>::n_secant_predictions() const;
+  template unsigned int
+  Problem<3>::n_secant_predictions() const;
+  template const MatrixType &
+  Problem<2>::tangent_matrix() const;
+  template const MatrixType &
+  Problem<3>::tangent_matrix() const;
+  template const VectorType &
+  Problem<2>::solution() const;
+  template const VectorType &
+  Problem<3>::solution() const;
 } // namespace hyperelastic

@@ -16,18 +16,24 @@
 
 #include <hyperelastic/assembly/elasticity_operator.h>
 #include <hyperelastic/assembly/material_regions.h>
+#include <hyperelastic/assembly/snap_damping.h>
+#include <hyperelastic/constraints/system_constraint.h>
+#include <hyperelastic/constraints/unheld_rigid_motions.h>
 #include <hyperelastic/dynamics/time_stepping.h>
 #include <hyperelastic/formulation/formulation.h>
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/materials/material.h>
+#include <hyperelastic/solvers/continuation_system.h>
 #include <hyperelastic/solvers/convergence_test.h>
+#include <hyperelastic/solvers/damped_system.h>
+#include <hyperelastic/solvers/lagged_system.h>
 #include <hyperelastic/solvers/linear_solver.h>
 #include <hyperelastic/solvers/linear_solver_parameters.h>
-#include <hyperelastic/solvers/damped_system.h>
 #include <hyperelastic/solvers/load_stepping.h>
 #include <hyperelastic/solvers/newton_parameters.h>
-#include <hyperelastic/solvers/snap_damping.h>
-#include <hyperelastic/solvers/unheld_rigid_motions.h>
+#include <hyperelastic/solvers/predictor_softening.h>
+#include <hyperelastic/solvers/tangent_system.h>
+#include <hyperelastic/solvers/trust_region_system.h>
 
 #include <memory>
 #include <string>
@@ -35,7 +41,13 @@
 namespace hyperelastic
 {
   template <int dim>
-  class EquilibriumSystem : public SteppedSystem, public DampedSystem
+  class EquilibriumSystem : public SteppedSystem,
+                            public TrustRegionSystem,
+                            public LaggedSystem,
+                            public PredictorSoftening,
+                            public DampedSystem,
+                            public ContinuationSystem,
+                            public TangentSystem
   {
   public:
     /// The parts the system works on, owned by Problem (they outlive it).
@@ -56,10 +68,10 @@ namespace hyperelastic
       LinearSolver                  &linear_solver;
       dealii::TimerOutput           &timer;
       dealii::ConditionalOStream     pcout;
-      /// Whether a contact has friction (which resists the rigid motions
-      /// along the contact surfaces of the bodies it holds, however
-      /// weakly; see UnheldRigidMotions).
-      bool frictional = false;
+      /// Whether a load term resists sliding along the surfaces that hold
+      /// a body (it resists the rigid motions along them, however weakly;
+      /// see UnheldRigidMotions).
+      bool sliding_resisted = false;
     };
 
     /// The constraints, the tangent's sparsity and the vectors (u = 0).
@@ -126,18 +138,7 @@ namespace hyperelastic
     assemble_linearization(bool              impose_constraint_increment,
                            TangentProjection projection) override;
     void
-    solve_linearization(double              forcing,
-                        bool                soften_predictor,
-                        LinearizationSolve &solve) override;
-    bool
-    supports_trust_region() const override;
-    bool
-    has_negative_curvature() override;
-    void
-    solve_linearization_in_trust_region(double              forcing,
-                                        double              radius,
-                                        LinearizationSolve &solve,
-                                        TrustRegionStep    &step) override;
+    solve_linearization(double forcing, LinearizationSolve &solve) override;
     Properties
     properties() const override;
     double
@@ -152,10 +153,31 @@ namespace hyperelastic
     residual_norms() override;
     double
     solution_scale() const override;
-    Verdict
-    judge_converged_state(bool update_lagged) override;
+    void
+    judge_converged_state() override;
+
+    // TrustRegionSystem
+    bool
+    has_negative_curvature() override;
+    void
+    solve_linearization_in_trust_region(double              forcing,
+                                        double              radius,
+                                        LinearizationSolve &solve,
+                                        Step               &step) override;
+
+    // LaggedSystem: the load terms' lagged quantities (friction).
     LaggedUpdate
-    update_lagged() override;
+    update_lagged(LagMoment moment) override;
+
+    // PredictorSoftening: the predictor's update inverts cells of a state
+    // without inverted ones (a large prescribed increment, the tangent's
+    // linear extension far outside its range: the one-step crush): the
+    // increment extended with linear elasticity at zero Poisson's ratio at
+    // rest (which moves a clamped block's interior with its ends instead of
+    // bulging it through itself) replaces it if its energy is lower.
+    // Displacement formulation, models defined at J <= 0, with a potential.
+    bool
+    soften_predictor(unsigned int &linear_iterations) override;
 
     // SteppedSystem
     void
@@ -164,11 +186,15 @@ namespace hyperelastic
     store_converged_state() override;
     void
     restore_converged_state() override;
+    const VectorType &
+    state() const override
+    {
+      return u;
+    }
 
     // DampedSystem: the lumped mass of unit density on the free unknowns
-    // (SnapDamping), with a potential only.
-    bool
-    supports_damping() const override;
+    // (SnapDamping), with a potential and no unheld bodies
+    // (Properties::damping).
     void
     set_damping(double c) override;
     double
@@ -190,36 +216,20 @@ namespace hyperelastic
     // ContinuationSystem
     void
     set_state(const VectorType &u, double t) override;
-    const VectorType &
-    state() const override
-    {
-      return u;
-    }
-    ResidualNorms
-    free_residual(VectorType &r) override;
     void
     load_derivative(VectorType &r_t) override;
+    double
+    path_product(const VectorType &a, const VectorType &b) const override;
+
+    // TangentSystem
+    ResidualNorms
+    free_residual(VectorType &r) override;
     void
     assemble_tangent() override;
     unsigned int
     solve_tangent(const VectorType &b, VectorType &x) override;
-    double
-    path_product(const VectorType &a, const VectorType &b) const override;
 
-  private:
-    /// The predictor's update inverts cells of a state without inverted
-    /// ones (a large prescribed increment, the tangent's linear extension
-    /// far outside its range: the one-step crush): the increment extended
-    /// with linear elasticity at zero Poisson's ratio at rest (which moves
-    /// a clamped block's interior with its ends instead of bulging it
-    /// through itself) replaces it if its energy is lower. Displacement
-    /// formulation, models defined at J <= 0, with a potential. Called by
-    /// solve_linearization() when asked to; returns whether it replaced the
-    /// update, @p linear_iterations gets the Krylov iterations spent on
-    /// trying.
-    bool
-    soften_inverting_predictor(unsigned int &linear_iterations);
-    /// Assembles the tangent projected everywhere at the current iterate
+  private: /// Assembles the tangent projected everywhere at the current iterate
     /// into `extension` and prepares the linear solver's preconditioner on
     /// it: positive, as truncated CG needs, where the tangent is not.
     void
@@ -234,22 +244,27 @@ namespace hyperelastic
     double
     residual_target() const;
 
-    /// Pins the unresisted rigid motions of the unheld bodies (at u, from
-    /// the tangent and the right-hand side @p b) and returns @p b without
-    /// its components along them (in pinned_rhs).
+    /// The system constraints prepared for a solve at u with the tangent
+    /// and the right-hand side @p b; returns @p b without its components
+    /// along what they hold (in pinned_rhs; @p b itself without any).
     const VectorType &
-    pinned_right_hand_side(const VectorType &b);
+    constrained_right_hand_side(const VectorType &b);
 
-    /// Makes @p x, the tangent's solution for a pinned right-hand side,
-    /// the one without components along the pinned motions (the extra
-    /// solves at @p tolerance, their iterations added to @p iterations).
+    /// Makes @p x, the tangent's solution for a constrained right-hand
+    /// side, meet the system constraints (the extra solves at
+    /// @p tolerance, their iterations added to @p iterations).
     void
-    constrain_to_pins(double tolerance, VectorType &x, unsigned int &iterations);
+    constrain_update(double tolerance, VectorType &x, unsigned int &iterations);
 
-    /// The linearization at u_ghosted into @p matrix and @p rhs: the load
-    /// terms' (ElasticityOperator::assemble_system with @p constraints and
-    /// @p projection), plus the snap damping where it acts, regularized
-    /// for unheld bodies. Collective.
+    /// Removes from @p v (at @p at) its components along what the system
+    /// constraints hold.
+    void
+    project_out(const VectorType &at, VectorType &v) const;
+
+    /// The linearization at u_ghosted into @p matrix and @p rhs: the
+    /// operator's (ElasticityOperator::assemble_system with @p constraints
+    /// and @p projection: the material, the terms, the snap damping where
+    /// it acts), regularized by the system constraints. Collective.
     void
     assemble_linearization_into(
       const dealii::AffineConstraints<double> &constraints,
@@ -274,9 +289,10 @@ namespace hyperelastic
     dealii::IndexSet         owned_dofs, relevant_dofs;
     ElasticityOperator<dim> *elasticity = nullptr;
     TimeStepping<dim>       *stepping   = nullptr;
-    /// Quasi-static bodies held by contact alone: their unresisted rigid
-    /// motions (null if every body has a Dirichlet condition).
-    std::unique_ptr<UnheldRigidMotions<dim>> unheld;
+    /// What changes the equations beyond the Dirichlet conditions, looped
+    /// over (SystemConstraint): the unresisted rigid motions of
+    /// quasi-static bodies held by contact alone.
+    std::vector<std::unique_ptr<SystemConstraint>> system_constraints;
 
     /// Dirichlet constraints: with the increment to the prescribed values
     /// (first iteration of a load step) and homogeneous (later iterations);
@@ -286,7 +302,7 @@ namespace hyperelastic
     const dealii::AffineConstraints<double> *active_constraints = nullptr;
 
     MatrixType tangent;
-    /// soften_inverting_predictor()'s system, and the tangent projected
+    /// soften_predictor()'s system, and the tangent projected
     /// everywhere that preconditions the trust region's truncated CG
     /// (empty until first needed).
     MatrixType extension;
@@ -318,8 +334,8 @@ namespace hyperelastic
     /// The last converged state and the one before it.
     ConvergedState converged, previous;
 
-    /// The damping of snap sub-steps (inactive otherwise; its metric is
-    /// made when first needed).
-    SnapDamping damping;
+    /// The damping of snap sub-steps, an energy term of the operator added
+    /// when first needed (null until then; inactive outside sub-steps).
+    SnapDamping<dim> *damping = nullptr;
   };
 } // namespace hyperelastic

@@ -1,9 +1,11 @@
-// A scene run end to end: the orchestrator. It builds the mesh, the
-// formulation's element and dofs, the material, the loads, the operator, the
-// time-stepping driver and the equilibrium system, lets the load stepper and
-// Newton drive that system, and after each converged step has the summary
-// measured and the output written. Every choice of formulation or scheme
-// lives behind Formulation and TimeStepping.
+// A scene run end to end: the orchestrator. It has the scene's Model built
+// (mesh, dofs, loads, materials, operator and terms), builds what a run
+// drives it with (the equilibrium system, the linear solver, the
+// time-stepping driver, the output), lets the load stepper and Newton drive
+// the system, and after each converged step has the summary measured and the
+// output written. Every choice of formulation or scheme lives behind
+// Formulation and TimeStepping; a calibration rebuilds the model's materials
+// and runs again on the same mesh (rebuild_materials()).
 #pragma once
 
 #include <deal.II/base/conditional_ostream.h>
@@ -14,15 +16,13 @@
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/lac/affine_constraints.h>
 
-#include <hyperelastic/assembly/elasticity_operator.h>
 #include <hyperelastic/assembly/material_regions.h>
-#include <hyperelastic/dynamics/time_stepping.h>
-#include <hyperelastic/equilibrium_system.h>
 #include <hyperelastic/formulation/formulation.h>
 #include <hyperelastic/loads/boundary_conditions.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/mesh/boundary_regions.h>
 #include <hyperelastic/mesh/cell_regions.h>
+#include <hyperelastic/model.h>
 #include <hyperelastic/output/output.h>
 #include <hyperelastic/output/step_postprocessor.h>
 #include <hyperelastic/output/step_reporter.h>
@@ -30,7 +30,6 @@
 #include <hyperelastic/output/surface_writer.h>
 #include <hyperelastic/parameters.h>
 #include <hyperelastic/solvers/linear_solver.h>
-#include <hyperelastic/solvers/load_stepping.h>
 #include <hyperelastic/solvers/newton_solver.h>
 
 #include <chrono>
@@ -43,12 +42,24 @@
 
 namespace hyperelastic
 {
+  // What a run builds and drives (problem.cc includes them: a change to the
+  // equations' parts does not recompile the users of Problem).
+  template <int dim>
+  class ElasticityOperator;
+  template <int dim>
+  class EquilibriumSystem;
+  template <int dim>
+  class TimeStepping;
+  struct LoadStep;
+  struct ResumePoint;
+
   template <int dim>
   class Problem
   {
   public:
     /// @p print: whether rank 0 prints progress (tests may switch it off).
     Problem(const Parameters &parameters, MPI_Comm comm, bool print = true);
+    ~Problem();
 
     /// Runs all load steps. Throws InputError or ConvergenceFailure.
     void
@@ -83,7 +94,7 @@ namespace hyperelastic
     const dealii::DoFHandler<dim> &
     get_dof_handler() const
     {
-      return dof_handler;
+      return model.dof_handler;
     }
 
     /// Wall time in seconds spent so far in each phase on this rank
@@ -95,13 +106,14 @@ namespace hyperelastic
       return timer.get_summary_data(dealii::TimerOutput::total_wall_time);
     }
 
-    /// Wall time in seconds of each stage of the set-up on this rank, in
-    /// order: the mesh's (read, order, check, build, partition, wait,
-    /// describe, distribute: MeshStatistics), then "dofs" (numbering),
-    /// "system" (sparsity, matrix and vectors), "null space" (rigid-body
-    /// modes for AMG), "operator" (element kernels), "rest" (loads,
-    /// stepping, checks, output set-up). Their sum is the "mesh and setup"
-    /// phase of wall_times().
+    /// Wall time in seconds of each stage of the last set-up on this rank,
+    /// in order: the mesh's (read, order, check, build, partition, wait,
+    /// describe, distribute: MeshStatistics) and "dofs" (regions, loads,
+    /// numbering), where the mesh was built; then "operator" (materials,
+    /// element kernels, contact terms), "system" (sparsity, matrix and
+    /// vectors), "null space" (rigid-body modes for AMG), "rest" (stepping,
+    /// checks, output set-up). Their sum is the set-up's part of the "mesh
+    /// and setup" phase of wall_times().
     const std::vector<std::pair<std::string, double>> &
     setup_stage_times() const
     {
@@ -112,80 +124,64 @@ namespace hyperelastic
     unsigned int
     n_preconditioner_setups() const
     {
-      return linear_solver.n_preconditioner_setups();
+      return linear_solver->n_preconditioner_setups();
     }
 
     /// How many of those were refreshes on earlier aggregates.
     unsigned int
     n_preconditioner_refreshes() const
     {
-      return linear_solver.n_preconditioner_refreshes();
+      return linear_solver->n_preconditioner_refreshes();
     }
 
     /// How many load steps started from an (admissible) secant prediction.
     unsigned int
-    n_secant_predictions() const
-    {
-      return stepping->n_predictions();
-    }
+    n_secant_predictions() const;
 
     /// Which linear solver runs (the run header's line).
     std::string
     linear_solver_description() const
     {
-      return linear_solver.description();
+      return linear_solver->description();
     }
 
     /// The tangent matrix of the last linearization (for benchmarks).
     const MatrixType &
-    tangent_matrix() const
-    {
-      return system->tangent_matrix();
-    }
+    tangent_matrix() const;
 
     /// The displacement with ghost entries.
     const VectorType &
-    solution() const
-    {
-      return system->solution();
-    }
+    solution() const;
 
-    /// Builds the mesh, the unknowns, the system and the operators: the
-    /// "mesh and setup" phase. run() calls it; a benchmark of the set-up
-    /// alone calls it directly (once; run() then does not repeat it).
+    /// Builds the model (the mesh, the unknowns, the materials and the
+    /// operator) and what a run drives it with: the "mesh and setup"
+    /// phase. run() calls it; a benchmark of the set-up alone calls it
+    /// directly (once; run() then does not repeat it).
     void
     setup();
 
+    /// Builds the model's materials anew from @p material and @p regions
+    /// (the scene's regions, with other constants: a calibration's trial),
+    /// on the same mesh, dofs and loads; the next run() starts from the
+    /// unloaded state with these materials and matches a run of a scene
+    /// that had them. Collective.
+    void
+    rebuild_materials(const MaterialParameters            &material,
+                      const std::vector<RegionParameters> &regions);
+
   private:
     // The set-up's steps (setup()).
-    /// The mesh of 'Mesh'; returns its boundary ids.
-    std::set<dealii::types::boundary_id>
-    setup_mesh();
-    /// The equilibrium system and the step post-processor.
+    /// The equilibrium system, the linear solver's configuration, the
+    /// step post-processor, the time-stepping driver and the supports
+    /// check: what a run drives the model with.
     void
-    setup_system(const dealii::IndexSet &pressure_dofs);
-    /// The energy terms beyond the scene's loads (contact, the driver's),
-    /// the time-stepping driver, the supports check and the linear
-    /// solver's configuration.
-    void
-    setup_stepping(const dealii::IndexSet &pressure_dofs);
+    setup_run();
     /// The output writers (and a restart's checkpoint).
     void
     setup_output();
-    /// The moduli the automatic contact defaults take: the stiffest of the
-    /// regions with a cell at the boundary (the only material's without
-    /// regions). Collective.
-    LameParameters
-    contact_moduli() const;
-    /// The largest over the smallest small-strain stiffness lambda + 2 mu of
-    /// the materials with cells (1 for one material): the linear solver's
-    /// 'AMG for contrast = auto'.
-    double
-    stiffness_contrast() const;
-    /// The density of each region (region 0 first); empty without regions.
-    std::vector<double>
-    region_densities() const;
-
+    /// Back to before setup_run() (the model's mesh, dofs and loads stay).
+    void
+    reset_run();
     void
     solve_all_load_steps();
     /// After converged step @p step: the summary, its row, the checkpoint,
@@ -228,46 +224,24 @@ namespace hyperelastic
     void
     read_checkpoint();
 
-    const Parameters           parameters;
+    /// The scene (its materials as last rebuilt).
+    Parameters                 parameters;
     const MPI_Comm             comm;
     dealii::ConditionalOStream pcout;
     dealii::TimerOutput        timer;
 
-    const std::unique_ptr<Formulation<dim>> formulation;
-    /// Fully distributed on several ranks; on one, a SerialTriangulation
-    /// (built in about half the time, the same cells in the same order).
-    std::unique_ptr<dealii::Triangulation<dim>> triangulation;
+    /// What the scene builds; the run drives it.
+    Model<dim>                                  model;
+    bool                                        mesh_built = false;
     std::vector<std::pair<std::string, double>> setup_stages;
-    /// The run header's lines about a mesh generated from a surface.
-    std::string                                 generated_mesh;
     bool                                        is_set_up = false;
-    const dealii::FESystem<dim>                 fe;
-    const dealii::MappingFE<dim>                mapping;
-    dealii::DoFHandler<dim>                     dof_handler;
 
-    /// The top-level Material (region 0).
-    std::unique_ptr<Material<dim>> material;
-    /// The models of Region 1 ... (parameters.regions' order), the region
-    /// of each cell, and both as the material of every cell.
-    std::vector<std::unique_ptr<Material<dim>>> region_models;
-    CellRegions                                 cell_regions;
-    /// The faces selected by 'Boundary region' conditions and their ids.
-    BoundaryRegions boundary_regions;
-    std::unique_ptr<MaterialRegions<dim>>       materials;
-    /// The same models in 3D, for the plane-strain stress in the output
-    /// (null without VTU output), region 0 first.
-    std::unique_ptr<Material<3>>                   material3d;
-    std::vector<std::unique_ptr<Material<3>>>      region_models3d;
-    std::unique_ptr<MaterialRegions<3>>            materials3d;
-    std::unique_ptr<BoundaryConditions<dim>>       boundary_conditions;
     std::function<void(BoundaryConditions<dim> &)> load_editor;
     std::function<void(const StepSummary<dim> &)>  step_observer;
-    std::unique_ptr<ElasticityOperator<dim>>       elasticity;
+    std::unique_ptr<LinearSolver>                  linear_solver;
     std::unique_ptr<TimeStepping<dim>>             stepping;
     std::unique_ptr<EquilibriumSystem<dim>>        system;
     std::unique_ptr<StepPostprocessor<dim>>        postprocessor;
-    /// What the contact terms report (null without contact).
-    std::unique_ptr<StepReporter<dim>> contact_reporter;
     /// The reporters of a step, in the order of their columns: the driver,
     /// the post-processor, then contact's.
     std::vector<StepReporter<dim> *>   reporters;
@@ -281,7 +255,6 @@ namespace hyperelastic
     std::unique_ptr<ResumePoint>                resume_point;
     std::vector<std::pair<double, std::string>> resumed_series;
     std::string                                 resumed_xdmf;
-    LinearSolver                                linear_solver;
     NewtonSolver                                newton;
 
     std::vector<StepSummary<dim>> step_summaries;

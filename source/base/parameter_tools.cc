@@ -4,6 +4,7 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -78,6 +79,25 @@ namespace hyperelastic
     if (coordinates.size() < 2 || coordinates.size() > 3)
       return {};
     return coordinates;
+  }
+
+  std::string
+  list_for_dimension(const std::string &text,
+                     const std::string &default_3d,
+                     const unsigned int dim,
+                     const char         separator)
+  {
+    const auto squeezed = [](const std::string &s) {
+      std::string result;
+      for (const char c : s)
+        if (!std::isspace(static_cast<unsigned char>(c)))
+          result += c;
+      return result;
+    };
+    if (dim != 2 || squeezed(text) != squeezed(default_3d))
+      return text;
+    const std::string s = squeezed(text);
+    return s.substr(0, s.rfind(separator));
   }
 
   unsigned int

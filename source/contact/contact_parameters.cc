@@ -114,7 +114,8 @@ namespace hyperelastic
                           "0, 0, 1",
                           List(Double()),
                           "plane: the normal pointing to the side the body is "
-                          "on (normalised here).");
+                          "on (normalised here); the default is '0, 1' in "
+                          "2D.");
         prm.declare_entry("Radius", "1", Double(), "sphere: its radius > 0.");
         prm.declare_entry("File",
                           "",
@@ -322,6 +323,10 @@ namespace hyperelastic
         check_rotation_axis(o, dim);
         if (o.type != ObstacleType::plane)
           continue;
+        // The default normal (0, 0, 1) is 3D; in 2D its natural counterpart
+        // is (0, 1).
+        if (dim == 2 && o.normal == std::vector<double>{0., 0., 1.})
+          o.normal = {0., 1.};
         fit(o.normal, o.subsection + "/Normal");
         double norm = 0.;
         for (const double n : o.normal)

@@ -96,7 +96,7 @@ namespace hyperelastic
         VectorType internal(owned, comm);
         context.elasticity.assemble_forces(u, 0., internal, scratch);
         scratch -= internal;
-        if (context.contact.active())
+        if (context.held_terms.present)
           {
             context.elasticity.end_state_forces(u, 0., internal);
             scratch -= internal;
@@ -131,8 +131,8 @@ namespace hyperelastic
     // the guess where all of it is feasible (below, once the end-state map
     // is set), since its first linearization at u_n would be the stiff
     // stick branch of every sliding vertex (zero slip).
-    const bool guess = c > 0. && (!context.contact.active() ||
-                                  context.contact.has_friction());
+    const bool guess = c > 0. && (!context.held_terms.present ||
+                                  context.held_terms.start_from_guess);
     if (guess)
       {
         new_velocity = scratch;
@@ -170,7 +170,7 @@ namespace hyperelastic
     // vertices just short of the obstacles, deep in the barrier (an
     // impact's acceleration extrapolated), where Newton crawls.
     double fraction = 1.;
-    if (context.contact.active())
+    if (context.held_terms.present)
       {
         new_velocity -= converged.u;
         fraction = context.elasticity.largest_feasible_step(converged.u,
@@ -192,7 +192,7 @@ namespace hyperelastic
         u_ghosted = u;
         return;
       }
-    if (context.contact.active())
+    if (context.held_terms.present)
       {
         context.elasticity.advance(1., solved);
         // Obstacle friction's normal forces and tangents are taken at the
@@ -226,7 +226,7 @@ namespace hyperelastic
                             u,
                             new_velocity,
                             new_acceleration);
-    if (integrator->end_force_weight() != 1. && context.contact.active())
+    if (integrator->end_force_weight() != 1. && context.held_terms.present)
       {
         // Newmark: the acceleration kept is that of the forces other than
         // contact, which took the step's whole impulse (time_integrator.h).

@@ -132,13 +132,14 @@ namespace hyperelastic
                           MultipleSelection("x|y|z"),
                           "Displacement components that are prescribed; the "
                           "others stay free (so 'x' on a face x = const is a "
-                          "symmetry roller).");
+                          "symmetry roller). The default is 'x, y' in 2D.");
         prm.declare_entry("Displacement",
                           "0; 0; 0",
                           Anything(),
                           "One expression of x, y, (z,) t per listed "
                           "component, separated by ';': the displacement of "
-                          "the reference point (x, y, z) at load factor t.");
+                          "the reference point (x, y, z) at load factor t. "
+                          "The default is '0; 0' in 2D.");
         prm.declare_entry("Vertex",
                           "",
                           Anything(),
@@ -163,9 +164,9 @@ namespace hyperelastic
                           "0; 0; 0",
                           Anything(),
                           "The nodal force: dim expressions of t (and x, y, "
-                          "z, evaluated at the point) separated by ';'. A "
-                          "dead load: its direction does not follow the "
-                          "body.");
+                          "z, evaluated at the point) separated by ';' (the "
+                          "default '0; 0' in 2D). A dead load: its "
+                          "direction does not follow the body.");
         prm.leave_subsection();
       }
     for (const BoundaryLoadKind &kind : boundary_load_kinds())
@@ -189,7 +190,7 @@ namespace hyperelastic
   }
 
   void
-  LoadingParameters::parse(ParameterHandler &prm)
+  LoadingParameters::parse(ParameterHandler &prm, const unsigned int dim)
   {
     prm.enter_subsection("Loading");
     n_load_steps                     = prm.get_integer("Number of load steps");
@@ -211,25 +212,30 @@ namespace hyperelastic
             c.boundary_id     = std::max(id, 0);
             c.boundary_region = region;
             c.subsection      = section;
+            // The 3D defaults (x, y, z held at 0) become 2D ones in 2D.
+            const std::string components_text =
+              list_for_dimension(prm.get("Components"), "x, y, z", dim, ',');
+            const std::string displacement_text =
+              list_for_dimension(prm.get("Displacement"), "0; 0; 0", dim, ';');
             for (const auto &name :
-                 dealii::Utilities::split_string_list(prm.get("Components")))
+                 dealii::Utilities::split_string_list(components_text))
               {
                 if (std::count(c.components.begin(),
                                c.components.end(),
                                component_index(name)) > 0)
                   reject(section + "/Components",
-                         prm.get("Components"),
+                         components_text,
                          "component " + name + " is listed twice");
                 c.components.push_back(component_index(name));
               }
-            c.expressions = split_expressions(prm.get("Displacement"));
+            c.expressions = split_expressions(displacement_text);
             if (c.components.empty())
               reject(section + "/Components",
-                     prm.get("Components"),
+                     components_text,
                      "list at least one of x, y, z");
             if (c.expressions.size() != c.components.size())
               reject(section + "/Displacement",
-                     prm.get("Displacement"),
+                     displacement_text,
                      "needs one expression per listed component (" +
                        std::to_string(c.components.size()) +
                        "), separated by ';'");
@@ -275,7 +281,8 @@ namespace hyperelastic
               reject(section + "/Point",
                      point,
                      "expected the coordinates 'x, y[, z]' of a vertex");
-            load.expressions = split_expressions(prm.get("Force"));
+            load.expressions = split_expressions(
+              list_for_dimension(prm.get("Force"), "0; 0; 0", dim, ';'));
             load.subsection  = section;
             point_loads.push_back(load);
           }

@@ -4,10 +4,8 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
-#include <hyperelastic/dynamics/time_integration_parameters.h>
 #include <hyperelastic/materials/material_parameters.h>
 #include <hyperelastic/materials/viscoelasticity.h>
-#include <hyperelastic/solvers/load_stepping_parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,8 +25,8 @@ namespace hyperelastic
         "Lame-based ones take the shared elastic constants of this "
         "subsection ('Elastic constants' and the moduli it selects); a model "
         "with constants of its own reads them from the subsection "
-        "Material/<model name> and ignores the shared ones. See README, "
-        "'Choosing a model'.";
+        "Material/<model name> and ignores the shared ones. See "
+        "doc/manual.md, 'Choosing a model'.";
       for (const MaterialModel &m : material_models())
         text += "\n'" + m.name + "': " + m.documentation;
       text += "\n'" + std::string(MaterialParameters::stiffness_warping_name) +
@@ -272,33 +270,5 @@ namespace hyperelastic
       reject(section + "Quasi-static duration",
              prm.get("Quasi-static duration"),
              "must be positive and finite");
-  }
-
-  void
-  check_viscoelasticity(const MaterialParameters        &material,
-                        const LoadSteppingParameters    &load_stepping,
-                        const TimeIntegrationParameters &time_integration)
-  {
-    // Viscoelasticity: the history is written at the solved state of a
-    // step of known length.
-    if (!material.viscoelasticity.active())
-      return;
-    const auto viscous = [&](const std::string &entry,
-                             const std::string &value,
-                             const std::string &why) {
-      reject(entry,
-             value,
-             "'Material/Viscoelasticity' (Weights = '" +
-               material.viscoelasticity.weights_text + "') " + why);
-    };
-    if (load_stepping.method == LoadControl::arc_length)
-      viscous("Load stepping/Method",
-              "arc length",
-              "needs steps of known length (load control)");
-    if (time_integration.scheme_name() == "implicit midpoint")
-      viscous("Time integration/Scheme",
-              "implicit midpoint",
-              "needs a scheme that solves at the end of the step "
-              "(backward Euler or Newmark)");
   }
 } // namespace hyperelastic

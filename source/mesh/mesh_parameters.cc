@@ -13,6 +13,14 @@ namespace hyperelastic
 {
   using namespace entry_patterns;
 
+  namespace
+  {
+    // The box's 3D defaults (a 2D scene takes their first two values).
+    constexpr const char *lower_corner_default = "0, 0, 0";
+    constexpr const char *upper_corner_default = "1, 1, 1";
+    constexpr const char *subdivisions_default = "1, 1, 1";
+  } // namespace
+
   void
   MeshParameters::declare(ParameterHandler &prm)
   {
@@ -56,17 +64,20 @@ namespace hyperelastic
       "surface. 0: the surface's triangles as they are (the inside at "
       "their mean edge length).");
     prm.declare_entry("Lower corner",
-                      "0, 0, 0",
+                      lower_corner_default,
                       List(Double(), 2, 3),
-                      "Box: coordinates of the lower corner (dim values).");
+                      "Box: coordinates of the lower corner (dim values; "
+                      "the default's first two in 2D).");
     prm.declare_entry("Upper corner",
-                      "1, 1, 1",
+                      upper_corner_default,
                       List(Double(), 2, 3),
-                      "Box: coordinates of the upper corner (dim values).");
+                      "Box: coordinates of the upper corner (dim values; "
+                      "the default's first two in 2D).");
     prm.declare_entry("Subdivisions",
-                      "1, 1, 1",
+                      subdivisions_default,
                       List(Integer(1), 2, 3),
-                      "Box: number of cells per direction (dim values); each "
+                      "Box: number of cells per direction (dim values; the "
+                      "default's first two in 2D); each "
                       "square is split into 2 triangles, each cube into 5 "
                       "tetrahedra.");
     prm.declare_entry("Global refinements",
@@ -79,7 +90,9 @@ namespace hyperelastic
   }
 
   void
-  MeshParameters::parse(ParameterHandler &prm, const std::string &scene_folder)
+  MeshParameters::parse(ParameterHandler  &prm,
+                        const std::string &scene_folder,
+                        const unsigned int dim)
   {
     prm.enter_subsection("Mesh");
     const std::string source_name = prm.get("Source");
@@ -99,14 +112,17 @@ namespace hyperelastic
         if (file[0] != '/')
           file = scene_folder + "/" + file;
       }
-    for (const auto &v :
-         dealii::Utilities::split_string_list(prm.get("Lower corner")))
+    // The box's defaults are 3D: a 2D scene that leaves them takes their
+    // first two values.
+    const auto list = [&](const std::string &entry, const char *default_3d) {
+      return dealii::Utilities::split_string_list(
+        list_for_dimension(prm.get(entry), default_3d, dim, ','));
+    };
+    for (const auto &v : list("Lower corner", lower_corner_default))
       lower_corner.push_back(dealii::Utilities::string_to_double(v));
-    for (const auto &v :
-         dealii::Utilities::split_string_list(prm.get("Upper corner")))
+    for (const auto &v : list("Upper corner", upper_corner_default))
       upper_corner.push_back(dealii::Utilities::string_to_double(v));
-    for (const auto &v :
-         dealii::Utilities::split_string_list(prm.get("Subdivisions")))
+    for (const auto &v : list("Subdivisions", subdivisions_default))
       subdivisions.push_back(dealii::Utilities::string_to_int(v));
     global_refinements = prm.get_integer("Global refinements");
     prm.leave_subsection();
@@ -126,8 +142,7 @@ namespace hyperelastic
     if (lower_corner.size() != dim)
       reject("Mesh/Lower corner",
              size(lower_corner) + " values",
-             "needs " + std::to_string(dim) + " values for dimension " +
-               std::to_string(dim));
+             "needs " + std::to_string(dim) + " values");
     if (upper_corner.size() != dim)
       reject("Mesh/Upper corner",
              size(upper_corner) + " values",

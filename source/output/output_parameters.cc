@@ -4,9 +4,7 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
-#include <hyperelastic/dynamics/time_integration_parameters.h>
 #include <hyperelastic/output/output_parameters.h>
-#include <hyperelastic/solvers/load_stepping_parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -130,19 +128,5 @@ namespace hyperelastic
         points.push_back(coordinates);
       }
     prm.leave_subsection();
-  }
-
-  void
-  OutputParameters::check_checkpoints(
-    const LoadSteppingParameters    &load_stepping,
-    const TimeIntegrationParameters &time_integration) const
-  {
-    if (checkpoint_every > 0 &&
-        load_stepping.method == LoadControl::arc_length &&
-        !time_integration.dynamic())
-      reject("Output/Checkpoint every",
-             std::to_string(checkpoint_every),
-             "checkpoints continue load control or time stepping; 'Load "
-             "stepping/Method = arc length' is not supported");
   }
 } // namespace hyperelastic

@@ -22,23 +22,25 @@ namespace hyperelastic
   }
 
   NewtonResult
-  ArcLengthStepper::step(SteppedSystem    &system,
-                         const VectorType &u_n,
-                         const double      t_n,
-                         const VectorType &du_t0,
-                         const double      ds,
-                         const double      sign,
-                         const double      land_at,
-                         VectorType       &delta,
-                         double           &t) const
+  ArcLengthStepper::step(SteppedSystem      &system,
+                         ContinuationSystem &continuation,
+                         TangentSystem      &tangent,
+                         const VectorType   &u_n,
+                         const double        t_n,
+                         const VectorType   &du_t0,
+                         const double        ds,
+                         const double        sign,
+                         const double        land_at,
+                         VectorType         &delta,
+                         double             &t) const
   {
     const bool landing = std::isfinite(land_at);
     // Predictor: along du/dt, |Delta u| = ds (landing: to t = land_at).
     const double dt0 =
-      landing
-        ? land_at - t_n
-        : sign * ds /
-            std::max(std::sqrt(system.path_product(du_t0, du_t0)), 1e-300);
+      landing ? land_at - t_n
+              : sign * ds /
+                  std::max(std::sqrt(continuation.path_product(du_t0, du_t0)),
+                           1e-300);
     delta = du_t0;
     delta *= dt0;
     t = t_n + dt0;
@@ -51,8 +53,8 @@ namespace hyperelastic
       {
         trial = u_n;
         trial += delta;
-        system.set_state(trial, t);
-        const ResidualNorms norms = system.free_residual(r);
+        continuation.set_state(trial, t);
+        const ResidualNorms norms = tangent.free_residual(r);
         NewtonIteration     row;
         row.iteration = it;
         row.residual  = norms.residual;
@@ -72,34 +74,16 @@ namespace hyperelastic
           }
         if (it > newton.max_iterations)
           break;
-        system.assemble_tangent();
+        tangent.assemble_tangent();
         r *= -1.;
-        unsigned int linear = system.solve_tangent(r, du_r);
+        unsigned int linear = tangent.solve_tangent(r, du_r);
         double       dt     = 0.;
         if (!landing)
           {
-            system.load_derivative(r_t);
+            continuation.load_derivative(r_t);
             r_t *= -1.;
-            linear += system.solve_tangent(r_t, du_t);
-            // |delta + du_r + dt du_t|^2 = ds^2.
-            VectorType base(delta);
-            base += du_r;
-            const double a    = system.path_product(du_t, du_t);
-            const double b    = 2. * system.path_product(du_t, base);
-            const double c    = system.path_product(base, base) - ds * ds;
-            const double disc = b * b - 4. * a * c;
-            if (!(disc >= 0.) || !(a > 0.))
-              throw ConvergenceFailure(
-                "arc length: the constraint has no real root (the step "
-                "leaves the linearized path)");
-            const double q  = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-            const double r1 = q / a, r2 = q != 0. ? c / q : r1;
-            // The root whose increment turns least from the last one.
-            const auto turn = [&](const double root) {
-              return system.path_product(base, delta) +
-                     root * system.path_product(du_t, delta);
-            };
-            dt = turn(r1) >= turn(r2) ? r1 : r2;
+            linear += tangent.solve_tangent(r_t, du_t);
+            dt = constraint_root(continuation, delta, du_r, du_t, ds);
           }
         VectorType du(du_r);
         if (dt != 0.)
@@ -119,28 +103,74 @@ namespace hyperelastic
                              " iterations (Newton/Max iterations)");
   }
 
-  void
+  double
+  ArcLengthStepper::constraint_root(const ContinuationSystem &continuation,
+                                    const VectorType         &delta,
+                                    const VectorType         &du_r,
+                                    const VectorType         &du_t,
+                                    const double              ds)
+  {
+    // |delta + du_r + dt du_t|^2 = ds^2.
+    VectorType base(delta);
+    base += du_r;
+    const double a    = continuation.path_product(du_t, du_t);
+    const double b    = 2. * continuation.path_product(du_t, base);
+    const double c    = continuation.path_product(base, base) - ds * ds;
+    const double disc = b * b - 4. * a * c;
+    if (!(disc >= 0.) || !(a > 0.))
+      throw ConvergenceFailure(
+        "arc length: the constraint has no real root (the step "
+        "leaves the linearized path)");
+    const double q  = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    const double r1 = q / a, r2 = q != 0. ? c / q : r1;
+    // The root whose increment turns least from the last one.
+    const auto turn = [&](const double root) {
+      return continuation.path_product(base, delta) +
+             root * continuation.path_product(du_t, delta);
+    };
+    return turn(r1) >= turn(r2) ? r1 : r2;
+  }
+
+  double
+  ArcLengthStepper::halved_length(const ConvergenceFailure &failure,
+                                  const double              ds,
+                                  const double              first_ds,
+                                  const double              t_n,
+                                  LoadStep                 &step) const
+  {
+    const double smaller = 0.5 * ds;
+    if (smaller < parameters.minimum_increment * first_ds)
+      {
+        std::ostringstream message;
+        message << "arc-length step from t = " << t_n << ": " << failure.what()
+                << "\nthe arc length cannot be halved again: " << smaller
+                << " < " << parameters.minimum_increment
+                << " times the first one ('Load stepping/Minimum "
+                   "increment'); the last converged state is t = "
+                << t_n << " (step " << step.step << ")";
+        throw ConvergenceFailure(message.str());
+      }
+    ++step.cut_backs;
+    const std::string what = failure.what();
+    pcout << "   cut-back " << step.cut_backs << ": "
+          << what.substr(0, what.find('\n')) << "\n   arc length halved to "
+          << smaller << std::endl;
+    return smaller;
+  }
+
+  bool
   ArcLengthStepper::run(
-    SteppedSystem &system,
+    SteppedSystem      &system,
+    ContinuationSystem &continuation,
+    TangentSystem      &tangent,
     const std::function<void(const LoadStep &, const NewtonResult &)>
       &on_converged) const
   {
     system.store_converged_state();
-    VectorType u_n(system.state());
-    double     t_n = 0.;
-    VectorType r_t(u_n), du_t(u_n), delta(u_n), last_delta(u_n);
-    bool       have_last = false;
-    system.set_state(u_n, t_n);
-    // The stiffness along the path, unloaded: the scale of 'stability'.
-    const double unloaded = stiffness_along_path(system, r_t, du_t);
-    // The first step: the tangent predictor of the first nominal load step
-    // (and the longest step).
-    const double first_ds =
-      nominal * std::sqrt(system.path_product(du_t, du_t));
+    Path         path(system.state());
+    const double first_ds = start(system, continuation, tangent, path);
     if (!(first_ds > 0.))
-      throw ConvergenceFailure(
-        "arc length: the loads do not move the free unknowns (dr/dt = 0 at "
-        "the start): nothing to follow");
+      return false;
     double   ds = first_ds;
     LoadStep step;
     // Set when a step passed the maximum load factor upwards although its
@@ -148,93 +178,148 @@ namespace hyperelastic
     bool land = false;
     while (step.step < parameters.maximum_steps)
       {
-        // Land on the maximum load factor rather than pass it upwards.
+        // Along the last step's way (the sign of det K changes at a limit
+        // point, so the tangent alone cannot tell it).
         const double sign =
-          have_last ? (system.path_product(du_t, last_delta) >= 0. ? 1. : -1.)
-                    : 1.;
-        const double dt_predicted =
-          sign * ds / std::sqrt(system.path_product(du_t, du_t));
+          !path.have_last ||
+              continuation.path_product(path.du_t, path.last_delta) >= 0.
+            ? 1.
+            : -1.;
         const double land_at =
-          (t_n < parameters.maximum_load_factor &&
-           (land || t_n + dt_predicted >= parameters.maximum_load_factor))
-            ? parameters.maximum_load_factor
-            : std::numeric_limits<double>::quiet_NaN();
-        pcout << "\nArc-length step " << step.step + 1 << ": from t = " << t_n
-              << ", length " << ds
-              << (std::isfinite(land_at) ? " (landing on the maximum load "
-                                           "factor)"
-                                         : "")
-              << std::endl;
-        double       t = t_n;
+          announce_step(step.step + 1,
+                        path.t_n,
+                        ds,
+                        sign * ds /
+                          std::sqrt(
+                            continuation.path_product(path.du_t, path.du_t)),
+                        land);
+        double       t = path.t_n;
         NewtonResult result;
         try
           {
-            result =
-              this->step(system, u_n, t_n, du_t, ds, sign, land_at, delta, t);
+            result = this->step(system,
+                                continuation,
+                                tangent,
+                                path.u_n,
+                                path.t_n,
+                                path.du_t,
+                                ds,
+                                sign,
+                                land_at,
+                                path.delta,
+                                t);
             // Arc length does not lag quantities behind the iterate: the
             // converged state is only checked.
-            system.judge_converged_state(false);
+            system.judge_converged_state();
           }
         catch (const ConvergenceFailure &failure)
           {
             system.restore_converged_state();
-            system.set_state(u_n, t_n);
-            const double smaller = 0.5 * ds;
-            if (smaller < parameters.minimum_increment * first_ds)
-              {
-                std::ostringstream message;
-                message << "arc-length step from t = " << t_n << ": "
-                        << failure.what()
-                        << "\nthe arc length cannot be halved again: "
-                        << smaller << " < " << parameters.minimum_increment
-                        << " times the first one ('Load stepping/Minimum "
-                           "increment'); the last converged state is t = "
-                        << t_n << " (step " << step.step << ")";
-                throw ConvergenceFailure(message.str());
-              }
-            ++step.cut_backs;
-            ds                     = smaller;
-            const std::string what = failure.what();
-            pcout << "   cut-back " << step.cut_backs << ": "
-                  << what.substr(0, what.find('\n'))
-                  << "\n   arc length halved to " << ds << std::endl;
+            continuation.set_state(path.u_n, path.t_n);
+            ds = halved_length(failure, ds, first_ds, path.t_n, step);
             // The predictor direction of u_n again (the tangent was
             // overwritten by the failed iterations).
-            stiffness_along_path(system, r_t, du_t);
+            stiffness_along_path(continuation, tangent, path.r_t, path.du_t);
             continue;
           }
-        if (!std::isfinite(land_at) && t_n < parameters.maximum_load_factor &&
+        if (!std::isfinite(land_at) &&
+            path.t_n < parameters.maximum_load_factor &&
             t > parameters.maximum_load_factor)
           {
             system.restore_converged_state();
-            system.set_state(u_n, t_n);
+            continuation.set_state(path.u_n, path.t_n);
             land = true;
             pcout << "   passed the maximum load factor (t = " << t
                   << "): solved again, landing on it" << std::endl;
-            stiffness_along_path(system, r_t, du_t);
+            stiffness_along_path(continuation, tangent, path.r_t, path.du_t);
             continue;
           }
-        system.store_converged_state();
-        last_delta = delta;
-        have_last  = true;
-        u_n        = system.state();
-        step.step += 1;
-        step.increment   = t - t_n;
-        step.load_factor = t;
-        t_n              = t;
-        // The next predictor, and the stability of the converged state.
-        system.set_state(u_n, t_n);
-        result.stability = stiffness_along_path(system, r_t, du_t) / unloaded;
+        advance(system, continuation, tangent, t, path, step, result);
         on_converged(step, result);
         step.cut_backs = 0;
         if (std::isfinite(land_at))
-          return;
+          return true;
         const double ratio =
           std::sqrt(double(parameters.easy_step_iterations) /
                     std::max<std::size_t>(result.iterations(), 1));
         ds = std::min(first_ds, ds * std::clamp(ratio, 0.5, 2.));
       }
     pcout << "\nArc length: 'Load stepping/Maximum steps' = "
-          << parameters.maximum_steps << " reached at t = " << t_n << std::endl;
+          << parameters.maximum_steps << " reached at t = " << path.t_n
+          << std::endl;
+    return true;
+  }
+
+  double
+  ArcLengthStepper::start(SteppedSystem      &system,
+                          ContinuationSystem &continuation,
+                          TangentSystem      &tangent,
+                          Path               &path) const
+  {
+    continuation.set_state(path.u_n, path.t_n);
+    // The stiffness along the path, unloaded: the scale of 'stability'.
+    path.unloaded =
+      stiffness_along_path(continuation, tangent, path.r_t, path.du_t);
+    // The first step: the tangent predictor of the first nominal load step
+    // (and the longest step).
+    const double first_ds =
+      nominal * std::sqrt(continuation.path_product(path.du_t, path.du_t));
+    if (!(first_ds > 0.))
+      {
+        // No load moves the free unknowns: the path is the state at rest
+        // (or there is none to follow). Load control takes the steps.
+        pcout << "Arc length: the loads do not move the free unknowns "
+                 "(dr/dt = 0 at the start): nothing to follow; load control "
+                 "takes the steps"
+              << std::endl;
+        system.restore_converged_state();
+      }
+    return first_ds;
+  }
+
+  double
+  ArcLengthStepper::announce_step(const unsigned int number,
+                                  const double       t_n,
+                                  const double       ds,
+                                  const double       dt_predicted,
+                                  const bool         land) const
+  {
+    // Land on the maximum load factor rather than pass it upwards.
+    const double land_at =
+      (t_n < parameters.maximum_load_factor &&
+       (land || t_n + dt_predicted >= parameters.maximum_load_factor))
+        ? parameters.maximum_load_factor
+        : std::numeric_limits<double>::quiet_NaN();
+    pcout << "\nArc-length step " << number << ": from t = " << t_n
+          << ", length " << ds
+          << (std::isfinite(land_at) ? " (landing on the maximum load "
+                                       "factor)"
+                                     : "")
+          << std::endl;
+    return land_at;
+  }
+
+  void
+  ArcLengthStepper::advance(SteppedSystem      &system,
+                            ContinuationSystem &continuation,
+                            TangentSystem      &tangent,
+                            const double        t,
+                            Path               &path,
+                            LoadStep           &step,
+                            NewtonResult       &result) const
+  {
+    system.store_converged_state();
+    path.last_delta = path.delta;
+    path.have_last  = true;
+    path.u_n        = system.state();
+    step.step += 1;
+    step.increment   = t - path.t_n;
+    step.load_factor = t;
+    path.t_n         = t;
+    // The next predictor, and the stability of the converged state.
+    continuation.set_state(path.u_n, path.t_n);
+    result.stability =
+      stiffness_along_path(continuation, tangent, path.r_t, path.du_t) /
+      path.unloaded;
   }
 } // namespace hyperelastic

@@ -109,6 +109,83 @@ namespace hyperelastic
            ")" + (symmetric ? "" : "; the tangent is not symmetric");
   }
 
+  namespace
+  {
+    /// ML smoothed aggregation with the full rigid-body near-null space
+    /// (set by the caller): the options for 'Linear solver' and a tangent
+    /// @p A of @p n_components unknowns per node; @p for_contrast: parts of
+    /// very different stiffness.
+    Teuchos::ParameterList
+    ml_options(const LinearSolverParameters         &parameters,
+               const bool                            for_contrast,
+               const unsigned int                    n_components,
+               const TrilinosWrappers::SparseMatrix &A)
+    {
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic = true;
+      data.aggregation_threshold =
+        for_contrast
+          ? std::max(parameters.aggregation_threshold,
+                     LinearSolverParameters::contrast_aggregation_threshold)
+          : parameters.aggregation_threshold;
+      data.smoother_sweeps = parameters.smoother_sweeps;
+      data.smoother_type   = "Chebyshev";
+      data.coarse_type     = "Amesos-KLU";
+      Teuchos::ParameterList              ml_list;
+      std::unique_ptr<Epetra_MultiVector> unused_modes;
+      data.set_parameters(ml_list, unused_modes, A);
+      ml_list.set("PDE equations", static_cast<int>(n_components));
+      if (!parameters.smoothed_aggregation)
+        ml_list.set("aggregation: damping factor", 0.);
+      // Parts of very different stiffness: prolongators that minimize the
+      // energy of the coarse basis functions (across a stiff-soft interface
+      // a damped-Jacobi step smears them into the stiff part).
+      if (for_contrast && parameters.smoothed_aggregation)
+        {
+          ml_list.set("energy minimization: enable", true);
+          ml_list.set("energy minimization: type", 2);
+        }
+      return ml_list;
+    }
+
+    /// A x = b with 'Linear solver/Direct solver'; a ConvergenceFailure
+    /// naming it if it fails.
+    void
+    solve_directly(const LinearSolverParameters         &parameters,
+                   const TrilinosWrappers::SparseMatrix &A,
+                   TrilinosWrappers::MPI::Vector        &x,
+                   const TrilinosWrappers::MPI::Vector  &b)
+    {
+      SolverControl                                  control(1, 0);
+      TrilinosWrappers::SolverDirect::AdditionalData data(
+        false, parameters.direct_solver);
+      TrilinosWrappers::SolverDirect direct(control, data);
+      try
+        {
+          direct.solve(A, x, b);
+        }
+      catch (const std::exception &e)
+        {
+          throw ConvergenceFailure("direct solver " + parameters.direct_solver +
+                                   " failed: " + exception_message(e));
+        }
+    }
+
+    /// The Krylov method @p name with AMG stopped short of its tolerance.
+    [[noreturn]] void
+    throw_krylov_failure(const std::string &name, const SolverControl &control)
+    {
+      std::ostringstream message;
+      message << std::scientific << std::setprecision(3) << name
+              << " with AMG did not converge: residual " << control.last_value()
+              << " after " << control.last_step() << " iterations (target "
+              << control.tolerance()
+              << "); raise 'Linear solver/Max iterations' or use Type = "
+                 "direct";
+      throw ConvergenceFailure(message.str());
+    }
+  } // namespace
+
   void
   LinearSolver::build_amg(const TrilinosWrappers::SparseMatrix &A,
                           const bool may_reuse_aggregates,
@@ -141,31 +218,8 @@ namespace hyperelastic
         ++n_refreshes;
         return;
       }
-    // ML smoothed aggregation with the full rigid-body near-null space.
-    TrilinosWrappers::PreconditionAMG::AdditionalData data;
-    data.elliptic              = true;
-    data.aggregation_threshold =
-      amg_for_contrast()
-        ? std::max(parameters.aggregation_threshold,
-                   LinearSolverParameters::contrast_aggregation_threshold)
-        : parameters.aggregation_threshold;
-    data.smoother_sweeps       = parameters.smoother_sweeps;
-    data.smoother_type         = "Chebyshev";
-    data.coarse_type           = "Amesos-KLU";
-    Teuchos::ParameterList              ml_list;
-    std::unique_ptr<Epetra_MultiVector> unused_modes;
-    data.set_parameters(ml_list, unused_modes, A);
-    ml_list.set("PDE equations", static_cast<int>(n_components));
-    if (!parameters.smoothed_aggregation)
-      ml_list.set("aggregation: damping factor", 0.);
-    // Parts of very different stiffness: prolongators that minimize the
-    // energy of the coarse basis functions (across a stiff-soft interface a
-    // damped-Jacobi step smears them into the stiff part).
-    if (amg_for_contrast() && parameters.smoothed_aggregation)
-      {
-        ml_list.set("energy minimization: enable", true);
-        ml_list.set("energy minimization: type", 2);
-      }
+    Teuchos::ParameterList ml_list =
+      ml_options(parameters, amg_for_contrast(), n_components, A);
     // The mixed formulation: AMG on the displacement block only.
     if (saddle_point)
       block_null_space = saddle_point->displacement_rows(null_space, n_modes);
@@ -209,20 +263,7 @@ namespace hyperelastic
       *negative_curvature = false;
     if (parameters.type == LinearSolverType::direct)
       {
-        SolverControl                                  control(1, 0);
-        TrilinosWrappers::SolverDirect::AdditionalData data(
-          false, parameters.direct_solver);
-        TrilinosWrappers::SolverDirect direct(control, data);
-        try
-          {
-            direct.solve(A, x, b);
-          }
-        catch (const std::exception &e)
-          {
-            throw ConvergenceFailure("direct solver " +
-                                     parameters.direct_solver +
-                                     " failed: " + exception_message(e));
-          }
+        solve_directly(parameters, A, x, b);
         return 0;
       }
 
@@ -276,16 +317,7 @@ namespace hyperelastic
     if (indefinite())
       return iterations;
     if (control.last_check() != SolverControl::success)
-      {
-        std::ostringstream message;
-        message << std::scientific << std::setprecision(3) << krylov_name()
-                << " with AMG did not converge: residual "
-                << control.last_value() << " after " << control.last_step()
-                << " iterations (target " << control.tolerance()
-                << "); raise 'Linear solver/Max iterations' or use Type = "
-                   "direct";
-        throw ConvergenceFailure(message.str());
-      }
+      throw_krylov_failure(krylov_name(), control);
     const double rate = control.last_step() / decades;
     if (fresh)
       baseline_rate = rate;

@@ -4,9 +4,6 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
-#include <hyperelastic/contact/contact_parameters.h>
-#include <hyperelastic/dynamics/time_integration_parameters.h>
-#include <hyperelastic/formulation/formulation_parameters.h>
 #include <hyperelastic/solvers/load_stepping_parameters.h>
 
 #include <algorithm>
@@ -146,37 +143,5 @@ namespace hyperelastic
              prm.get("Minimum increment"),
              "must be positive");
     prm.leave_subsection();
-  }
-
-  void
-  check_arc_length(const LoadSteppingParameters    &load_stepping,
-                   const TimeIntegrationParameters &time_integration,
-                   const ContactParameters         &contact,
-                   const ProblemParameters         &problem)
-  {
-    // Arc length continues a quasi-static path of the displacement
-    // formulation (the constraint measures displacements; contact and
-    // inertia have states of their own along t).
-    if (load_stepping.method != LoadControl::arc_length)
-      return;
-    const auto arc = [&](const std::string &entry,
-                         const std::string &value,
-                         const std::string &why) {
-      reject(entry, value, "'Load stepping/Method = arc length' " + why);
-    };
-    if (time_integration.dynamic())
-      arc("Time integration/Scheme",
-          time_integration.scheme_name(),
-          "continues quasi-static scenes only");
-    if (contact.active())
-      arc(contact.self_contact ? "Contact/Self contact"
-                               : "Contact/Obstacle 1/Type",
-          contact.self_contact ? "true" : "(an obstacle)",
-          "does not work with contact yet");
-    if (problem.formulation == "stiffness warping")
-      arc("Problem/Formulation",
-          problem.formulation,
-          "does not work with stiffness warping (a linearization per "
-          "step, not a path)");
   }
 } // namespace hyperelastic

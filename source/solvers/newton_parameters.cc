@@ -4,8 +4,6 @@
 
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
-#include <hyperelastic/materials/material_parameters.h>
-#include <hyperelastic/materials/material_registry.h>
 #include <hyperelastic/solvers/newton_parameters.h>
 
 #include <algorithm>
@@ -189,24 +187,5 @@ namespace hyperelastic
              "0",
              "absolute and relative residual tolerance cannot both be zero");
     prm.leave_subsection();
-  }
-
-  void
-  check_inverted_elements(const NewtonParameters   &newton,
-                          const MaterialParameters &material)
-  {
-    // Accepting inverted equilibria needs a model defined at J <= 0.
-    if (newton.inverted_elements != InvertedElements::warn)
-      return;
-    const bool defined =
-      material_model(material.registered_model()).defined_for_inverted_elements;
-    if (!defined)
-      reject("Newton/Inverted elements at equilibrium",
-             "warn",
-             "the " + material.model +
-               " model is not defined for inverted elements (its energy "
-               "is infinite at J <= 0), so no state with them can be "
-               "accepted; use 'automatic' or 'reject', or a model "
-               "defined there (e.g. stable neo-Hookean or corotational)");
   }
 } // namespace hyperelastic

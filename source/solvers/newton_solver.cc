@@ -161,6 +161,14 @@ namespace hyperelastic
                                                         : Check::admissibility;
     // Sufficient decrease E(alpha) <= E(0) + c alpha dE/dalpha(0).
     const double slope = test_energy ? system.directional_derivative() : 0.;
+    if (test_energy && slope == 0.)
+      {
+        // Not an indefinite tangent: no direction at all, away from the
+        // equilibrium (attempt() takes a state in equilibrium as it is).
+        failure = "the Newton direction is zero at a residual above its "
+                  "target (the linear solve returned no update)";
+        return false;
+      }
     if (test_energy && !(slope < 0.))
       {
         // An indefinite tangent can give a direction along which the energy
@@ -216,6 +224,13 @@ namespace hyperelastic
   }
 
   bool
+  NewtonSolver::in_equilibrium(NonlinearSystem &system) const
+  {
+    const ResidualNorms norms = system.residual_norms();
+    return norms.residual <= ConvergenceTest(parameters).residual_target(norms);
+  }
+
+  bool
   NewtonSolver::attempt(NonlinearSystem                     &system,
                         const NonlinearSystem::Properties   &properties,
                         const TangentProjection              projection,
@@ -231,16 +246,32 @@ namespace hyperelastic
           system.assemble_linearization(state.moving_constraints, projection);
         solve.watch_curvature =
           solve.watch_curvature && !state.moving_constraints;
-        system.solve_linearization(row.forcing,
-                                   soften_predictor && state.moving_constraints,
-                                   solve);
+        system.solve_linearization(row.forcing, solve);
         if (solve.negative_curvature)
           {
             failure = "the tangent is indefinite (negative curvature in "
                       "the Krylov solve)";
             return false;
           }
+        if (soften_predictor && state.moving_constraints && state.softening)
+          {
+            unsigned int extension_iterations = 0;
+            solve.softened_predictor =
+              state.softening->soften_predictor(extension_iterations);
+            solve.linear_iterations += extension_iterations;
+          }
 
+        // A state already in equilibrium (an unloaded scene, a body at
+        // rest, a load that starts later): the residual meets its target
+        // and the direction does not descend (zero at a zero residual).
+        // Newton stays where it is; no step length is searched for.
+        if (!state.moving_constraints &&
+            !(system.directional_derivative() < 0.) && in_equilibrium(system))
+          {
+            system.evaluate_trial(0., NonlinearSystem::TrialCheck::none);
+            take_trial(0., false, state.current, state.current, row);
+            return true;
+          }
         const bool test_merit =
           parameters.line_search && !state.moving_constraints;
         // The merit of the current iterate, where not known yet.
@@ -285,11 +316,9 @@ namespace hyperelastic
             failure = "a load term still moves within the step";
             return false;
           }
-        NonlinearSystem::TrustRegionStep step;
-        system.solve_linearization_in_trust_region(row.forcing,
-                                                   state.trust_radius,
-                                                   solve,
-                                                   step);
+        TrustRegionSystem::Step step;
+        state.trust_region->solve_linearization_in_trust_region(
+          row.forcing, state.trust_radius, solve, step);
         row.trust_radius       = state.trust_radius;
         row.negative_curvature = step.negative_curvature;
         if (!std::isfinite(state.current.energy))
@@ -361,109 +390,40 @@ namespace hyperelastic
     const std::vector<NewtonIteration> &history = result.history;
     const double nan            = std::numeric_limits<double>::quiet_NaN();
     const bool   first_of_solve = it == state.budget_start + 1;
-    TangentProjection projection =
+    IterationPlan plan;
+    plan.projection =
       policy.projection(first_of_solve,
                         state.current.residual,
                         first_of_solve ? nan
                                        : history[state.budget_start].residual);
     // The smallest J of the current iterate (not known before the first
     // iteration).
-    const double min_J = history.empty() ? nan : history.back().min_J;
-    const double eisenstat_walker =
+    plan.min_J = history.empty() ? nan : history.back().min_J;
+    plan.eisenstat_walker =
       forcing_term(history, state.step_start_residual, state.target);
-    state.step_start_residual     = state.equations_residual;
-    const bool   predictor        = state.moving_constraints;
-    // The iteration that imposes the prescribed-displacement increment is
-    // the load step's predictor: solved fully. So is a projected tangent's:
-    // far from the solution among inverted cells, loose solves give
-    // directions that wander between minima (the crush of stress test 25:
-    // 36 iterations inexact, 18 exact).
-    const auto forcing = [&](const TangentProjection p) {
-      return (properties.linear || predictor ||
-              TangentPolicy::projects_somewhere(p, min_J))
-               ? 0.
-               : eisenstat_walker;
-    };
-
-    NewtonIteration                     row;
-    NonlinearSystem::LinearizationSolve solve;
-    std::string                         failure;
-    // Newton/Follow negative curvature: a Krylov solve of the exact
-    // tangent that meets negative curvature stops, and the iteration is
-    // repeated in a trust region (the curvature followed, not projected
-    // away); once that has worked, the solve's later iterations start
-    // there. Not for the predictor, whose energy does not compare.
-    const auto trust_region_allowed = [&](const TangentProjection p) {
-      return policy.follows_negative_curvature(p) &&
-             !state.moving_constraints && properties.has_potential &&
-             parameters.line_search && system.supports_trust_region();
-    };
-    // The trust region starts as large as the last step taken or a tenth
-    // of the solution's size, whichever is larger: the energy then cuts it
-    // to what the model predicts well (trials cost no Krylov solve).
-    const auto start_trust_region = [&]() {
-      if (!std::isfinite(state.trust_radius) && !history.empty())
-        state.trust_radius =
-          std::max(history.back().update, 0.1 * system.solution_scale());
-      if (!(state.trust_radius > 0.))
-        state.trust_radius = std::numeric_limits<double>::quiet_NaN();
-      return std::isfinite(state.trust_radius);
-    };
+    state.step_start_residual = state.equations_residual;
+    plan.predictor            = state.moving_constraints;
     // In the trust region the tangent is exact: the truncated CG copes
     // with its negative curvature, and near the minimum its steps are
     // Newton's (quadratic convergence).
-    bool in_trust_region = state.in_trust_region &&
-                           trust_region_allowed(TangentProjection::none) &&
-                           start_trust_region();
-    if (in_trust_region)
-      projection = TangentProjection::none;
-    bool trust_region_tried = in_trust_region;
-    // Each fallback projects at more points than the tangent before it:
-    // at most three attempts (and the trust region).
-    row.forcing           = forcing(projection);
-    solve.watch_curvature = trust_region_allowed(projection);
-    while (
-      !(in_trust_region
-          ? attempt_trust_region(system, projection, state, row, solve, failure)
-          : attempt(system,
-                    properties,
-                    projection,
-                    policy.softens_inverting_predictor(),
-                    state,
-                    row,
-                    solve,
-                    failure)))
-      {
-        row.trust_radius       = nan;
-        row.negative_curvature = false;
-        solve.watch_curvature  = false;
-        if (!trust_region_tried && trust_region_allowed(projection) &&
-            start_trust_region())
-          {
-            system.evaluate_trial(0., NonlinearSystem::TrialCheck::none);
-            solve.negative_curvature = false;
-            trust_region_tried = in_trust_region = true;
-            projection                           = TangentProjection::none;
-            row.forcing                          = forcing(projection);
-            continue;
-          }
-        in_trust_region          = false;
-        solve.negative_curvature = false;
-        const std::optional<TangentProjection> next =
-          policy.fallback(projection);
-        if (!next)
-          throw ConvergenceFailure(failure + " in Newton iteration " +
-                                   std::to_string(it) + "\n" + table(result));
-        // Repeat this iteration from the same iterate with a tangent that
-        // projects more (the projected tangent's direction descends).
-        system.evaluate_trial(0., NonlinearSystem::TrialCheck::none);
-        projection  = *next;
-        row.forcing = forcing(projection);
-      }
-    state.in_trust_region = in_trust_region;
-    row.projected = projection == TangentProjection::every_point;
+    plan.in_trust_region = state.in_trust_region &&
+                           trust_region_allowed(properties,
+                                                policy,
+                                                state,
+                                                TangentProjection::none) &&
+                           start_trust_region(system, state, history);
+    if (plan.in_trust_region)
+      plan.projection = TangentProjection::none;
+    plan.trust_region_tried = plan.in_trust_region;
+
+    NewtonIteration                     row;
+    NonlinearSystem::LinearizationSolve solve;
+    attempt_until_taken(
+      system, properties, policy, it, state, result, plan, row, solve);
+    state.in_trust_region = plan.in_trust_region;
+    row.projected         = plan.projection == TangentProjection::every_point;
     row.projected_where_inverted =
-      TangentPolicy::projects_where_inverted(projection, min_J);
+      TangentPolicy::projects_where_inverted(plan.projection, plan.min_J);
     row.softened_predictor = solve.softened_predictor;
     row.iteration          = it;
     row.linear_iterations  = solve.linear_iterations;
@@ -473,6 +433,116 @@ namespace hyperelastic
     state.current.energy       = row.energy;
     state.current.energy_noise = row.energy_noise;
     return row;
+  }
+
+  double
+  NewtonSolver::iteration_forcing(const NonlinearSystem::Properties &properties,
+                                  const IterationPlan               &plan) const
+  {
+    // The iteration that imposes the prescribed-displacement increment is
+    // the load step's predictor: solved fully. So is a projected tangent's:
+    // far from the solution among inverted cells, loose solves give
+    // directions that wander between minima (the crush of stress test 25:
+    // 36 iterations inexact, 18 exact).
+    return (properties.linear || plan.predictor ||
+            TangentPolicy::projects_somewhere(plan.projection, plan.min_J))
+             ? 0.
+             : plan.eisenstat_walker;
+  }
+
+  bool
+  NewtonSolver::trust_region_allowed(
+    const NonlinearSystem::Properties &properties,
+    const TangentPolicy               &policy,
+    const SolveState                  &state,
+    const TangentProjection            projection) const
+  {
+    // Newton/Follow negative curvature: a Krylov solve of the exact
+    // tangent that meets negative curvature stops, and the iteration is
+    // repeated in a trust region (the curvature followed, not projected
+    // away); once that has worked, the solve's later iterations start
+    // there. Not for the predictor, whose energy does not compare.
+    return policy.follows_negative_curvature(projection) &&
+           !state.moving_constraints && properties.has_potential &&
+           parameters.line_search && properties.trust_region &&
+           state.trust_region;
+  }
+
+  bool
+  NewtonSolver::start_trust_region(
+    NonlinearSystem                    &system,
+    SolveState                         &state,
+    const std::vector<NewtonIteration> &history) const
+  {
+    // The trust region starts as large as the last step taken or a tenth
+    // of the solution's size, whichever is larger: the energy then cuts it
+    // to what the model predicts well (trials cost no Krylov solve).
+    if (!std::isfinite(state.trust_radius) && !history.empty())
+      state.trust_radius =
+        std::max(history.back().update, 0.1 * system.solution_scale());
+    if (!(state.trust_radius > 0.))
+      state.trust_radius = std::numeric_limits<double>::quiet_NaN();
+    return std::isfinite(state.trust_radius);
+  }
+
+  void
+  NewtonSolver::attempt_until_taken(
+    NonlinearSystem                     &system,
+    const NonlinearSystem::Properties   &properties,
+    const TangentPolicy                 &policy,
+    const unsigned int                   it,
+    SolveState                          &state,
+    const NewtonResult                  &result,
+    IterationPlan                       &plan,
+    NewtonIteration                     &row,
+    NonlinearSystem::LinearizationSolve &solve) const
+  {
+    // Each fallback projects at more points than the tangent before it:
+    // at most three attempts (and the trust region).
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::string  failure;
+    row.forcing = iteration_forcing(properties, plan);
+    solve.watch_curvature =
+      trust_region_allowed(properties, policy, state, plan.projection);
+    while (!(plan.in_trust_region
+               ? attempt_trust_region(
+                   system, plan.projection, state, row, solve, failure)
+               : attempt(system,
+                         properties,
+                         plan.projection,
+                         policy.softens_inverting_predictor(),
+                         state,
+                         row,
+                         solve,
+                         failure)))
+      {
+        row.trust_radius       = nan;
+        row.negative_curvature = false;
+        solve.watch_curvature  = false;
+        solve.negative_curvature = false;
+        if (!plan.trust_region_tried &&
+            trust_region_allowed(properties, policy, state, plan.projection) &&
+            start_trust_region(system, state, result.history))
+          {
+            system.evaluate_trial(0., NonlinearSystem::TrialCheck::none);
+            plan.trust_region_tried = plan.in_trust_region = true;
+            plan.projection = TangentProjection::none;
+            row.forcing     = iteration_forcing(properties, plan);
+            continue;
+          }
+        plan.in_trust_region = false;
+        const std::optional<TangentProjection> next =
+          policy.fallback(plan.projection);
+        if (!next)
+          throw ConvergenceFailure(failure + " in Newton iteration " +
+                                     std::to_string(it) + "\n" + table(result),
+                                   it);
+        // Repeat this iteration from the same iterate with a tangent that
+        // projects more (the projected tangent's direction descends).
+        system.evaluate_trial(0., NonlinearSystem::TrialCheck::none);
+        plan.projection = *next;
+        row.forcing     = iteration_forcing(properties, plan);
+      }
   }
 
   void
@@ -518,9 +588,9 @@ namespace hyperelastic
     // followed: from it Newton goes on in the trust region (the snap).
     if (policy.follows_negative_curvature(TangentProjection::none) &&
         properties.has_potential && parameters.line_search &&
-        system.supports_trust_region() && !properties.linear)
+        properties.trust_region && state.trust_region && !properties.linear)
       {
-        if (system.has_negative_curvature())
+        if (state.trust_region->has_negative_curvature())
           {
             if (verbose)
               pcout << "   (converged to a saddle: the exact tangent has "
@@ -534,12 +604,17 @@ namespace hyperelastic
           pcout << "   (no negative curvature at the converged state)"
                 << std::endl;
       }
-    if (system.judge_converged_state(true) ==
-        NonlinearSystem::Verdict::accepted)
-      return true;
-    row.probed_stable = false;
-    lagged_quantities_updated(system, it, state);
-    return false;
+    // The lagged quantities at the converged state: if they changed, the
+    // equations are new and Newton goes on from here.
+    if (state.lagged && state.lagged->update_lagged(LagMoment::converged) ==
+                          LaggedUpdate::updated)
+      {
+        row.probed_stable = false;
+        lagged_quantities_updated(system, it, state);
+        return false;
+      }
+    system.judge_converged_state();
+    return true;
   }
 
   void
@@ -585,7 +660,9 @@ namespace hyperelastic
       }
     else if (!(norms.residual <= state.early_lag_residual || full_step))
       return;
-    const LaggedUpdate outcome = system.update_lagged();
+    const LaggedUpdate outcome =
+      state.lagged ? state.lagged->update_lagged(LagMoment::within_solve)
+                   : LaggedUpdate::unchanged;
     if (outcome == LaggedUpdate::unchanged)
       {
         // From here on, full steps only.
@@ -636,6 +713,9 @@ namespace hyperelastic
 
     SolveState state;
     state.loose_reduction = reduction;
+    state.trust_region    = dynamic_cast<TrustRegionSystem *>(&system);
+    state.lagged          = dynamic_cast<LaggedSystem *>(&system);
+    state.softening       = dynamic_cast<PredictorSoftening *>(&system);
     for (unsigned int it = 1;
          it - state.budget_start <= max_iterations;
          ++it)
@@ -655,7 +735,8 @@ namespace hyperelastic
           throw ConvergenceFailure(
             "Newton produced a non-finite residual or update (an element may "
             "have inverted with a model undefined there)\n" +
-            table(result));
+              table(result),
+            result.iterations());
 
         state.target = convergence.residual_target(norms);
         if (it == 1 && state.loose_reduction > 0.)
@@ -671,11 +752,12 @@ namespace hyperelastic
           return result;
       }
     throw ConvergenceFailure("Newton did not converge in " +
-                             std::to_string(max_iterations) +
-                             (max_iterations == parameters.max_iterations
-                                ? " iterations (Newton/Max iterations)\n"
-                                : " iterations (a snap step's budget, "
-                                  "'Load stepping/Snap iterations')\n") +
-                             table(result));
+                               std::to_string(max_iterations) +
+                               (max_iterations == parameters.max_iterations
+                                  ? " iterations (Newton/Max iterations)\n"
+                                  : " iterations (a snap step's budget, "
+                                    "'Load stepping/Snap iterations')\n") +
+                               table(result),
+                             result.iterations());
   }
 } // namespace hyperelastic

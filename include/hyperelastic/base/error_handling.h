@@ -34,7 +34,25 @@ namespace hyperelastic
   class ConvergenceFailure : public std::runtime_error
   {
   public:
-    using std::runtime_error::runtime_error;
+    /// @p newton_iterations: the Newton iterations the failed solve used,
+    /// the failed one included (0 where no Newton solve failed).
+    explicit ConvergenceFailure(const std::string &message,
+                                unsigned int       newton_iterations = 0)
+        : std::runtime_error(message)
+        , iterations(newton_iterations)
+    {
+    }
+
+    /// The Newton iterations the failed solve used (what a budget of
+    /// iterations is charged).
+    unsigned int
+    newton_iterations() const
+    {
+      return iterations;
+    }
+
+  private:
+    unsigned int iterations;
   };
 
   /// Throws InputError(message) on every rank if @p failed is true on any rank.

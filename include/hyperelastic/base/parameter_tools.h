@@ -56,6 +56,16 @@ namespace hyperelastic
   std::vector<double>
   parse_coordinates(const std::string &text);
 
+  /// A list entry @p text of a scene in dimension @p dim: where it is the
+  /// 3D default @p default_3d (spaces aside: the scene did not set it, or
+  /// set it to the default), its first two items in 2D (their separator
+  /// @p separator: ',' or ';'); otherwise @p text as written.
+  std::string
+  list_for_dimension(const std::string &text,
+                     const std::string &default_3d,
+                     unsigned int       dim,
+                     char               separator);
+
   /// 0, 1, 2 for "x", "y", "z".
   unsigned int
   component_index(const std::string &name);

@@ -14,7 +14,6 @@
 #include <hyperelastic/assembly/elasticity_operator.h>
 #include <hyperelastic/assembly/material_regions.h>
 #include <hyperelastic/base/linear_algebra.h>
-#include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/dynamics/time_integration_parameters.h>
 #include <hyperelastic/loads/loading_parameters.h>
 #include <hyperelastic/materials/material.h>
@@ -39,6 +38,21 @@ namespace hyperelastic
     bool       valid         = false;
   };
 
+  /// What a driver must know of the operator's terms held at the end of a
+  /// step (SteppedTerm and MovingAdmissibleSetTerm: the barrier terms).
+  struct HeldTerms
+  {
+    /// There are such terms: they keep every state feasible (a step's
+    /// guess must too), and their forces take the step's whole impulse
+    /// (time_integrator.h).
+    bool present = false;
+    /// Their lagged quantities would be linearized on their stiff branch
+    /// at u_n (a sliding vertex's zero slip): a step starts from the
+    /// dynamics guess where it is feasible. Otherwise, with such terms, a
+    /// step starts at u_n.
+    bool start_from_guess = false;
+  };
+
   /// What a driver works on; everything is owned by Problem and outlives
   /// the driver.
   template <int dim>
@@ -50,8 +64,8 @@ namespace hyperelastic
     const LoadSteppingParameters &load_stepping;
     /// The number of load steps and the expressions' constants ('Loading').
     const LoadingParameters &loading;
-    /// Whether the scene has contact ('Contact').
-    const ContactParameters &contact;
+    /// The terms held at the end of a step.
+    const HeldTerms held_terms;
     /// The time a quasi-static load path takes for a model with history
     /// ('Material/Viscoelasticity').
     const double                   quasi_static_duration;

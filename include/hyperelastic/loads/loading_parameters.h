@@ -86,8 +86,11 @@ namespace hyperelastic
 
     static void
     declare(ParameterHandler &prm);
+    /// The Loading, Dirichlet and load sections for a scene of dimension
+    /// @p dim (the 3D defaults of Dirichlet's Components and Displacement
+    /// and of a Point load's Force become 2D ones in 2D).
     void
-    parse(ParameterHandler &prm);
+    parse(ParameterHandler &prm, unsigned int dim);
     /// The numbers of coordinates and expressions against Problem/Dimension
     /// @p dim (body force, Dirichlet components and vertices, point loads,
     /// boundary loads).

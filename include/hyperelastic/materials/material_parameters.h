@@ -62,17 +62,6 @@ namespace hyperelastic
     parse_elastic_constants(ParameterHandler &prm, LameParameters &lame);
   };
 
-  struct LoadSteppingParameters;
-  struct TimeIntegrationParameters;
-
-  /// What 'Material/Viscoelasticity' needs of the stepping: steps of known
-  /// length that solve at their end (an InputError naming the entry
-  /// otherwise).
-  void
-  check_viscoelasticity(const MaterialParameters        &material,
-                        const LoadSteppingParameters    &load_stepping,
-                        const TimeIntegrationParameters &time_integration);
-
   /// The scene's model in @p dim dimensions (2D scenes also need the 3D twin
   /// for the out-of-plane stress).
   template <int dim>

@@ -38,8 +38,12 @@ namespace hyperelastic
 
     static void
     declare(ParameterHandler &prm);
+    /// The entries of 'Mesh' for a scene of dimension @p dim (the box's 3D
+    /// defaults become 2D ones in 2D).
     void
-    parse(ParameterHandler &prm, const std::string &scene_folder);
+    parse(ParameterHandler  &prm,
+          const std::string &scene_folder,
+          unsigned int       dim);
     /// The box's entries against Problem/Dimension @p dim (one value per
     /// coordinate, the upper corner above the lower one); a surface is
     /// meshed in 3D only.

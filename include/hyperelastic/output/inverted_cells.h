@@ -1,7 +1,7 @@
 // Inverted cells of a displacement field: how many cells have J = det(I +
 // grad u) <= 0 at a quadrature point, the smallest J and where it is. For
 // the CSV summary, and for the solver's verdict on a converged state
-// (solvers/inverted_cell_policy.h).
+// (output/inverted_cell_policy.h).
 #pragma once
 
 #include <deal.II/base/point.h>

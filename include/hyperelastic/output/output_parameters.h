@@ -12,9 +12,6 @@ namespace hyperelastic
 {
   using dealii::ParameterHandler;
 
-  struct LoadSteppingParameters;
-  struct TimeIntegrationParameters;
-
   /// 'Output/Surface format': the deformed surface per output frame for
   /// animation tools (output/surface_writer.h), or none.
   enum class SurfaceFormat
@@ -54,10 +51,5 @@ namespace hyperelastic
     declare(ParameterHandler &prm);
     void
     parse(ParameterHandler &prm);
-    /// 'Checkpoint every' against the stepping: checkpoints continue load
-    /// control or time stepping, not quasi-static arc length.
-    void
-    check_checkpoints(const LoadSteppingParameters    &load_stepping,
-                      const TimeIntegrationParameters &time_integration) const;
   };
 } // namespace hyperelastic

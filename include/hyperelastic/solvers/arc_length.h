@@ -3,7 +3,8 @@
 // free displacements (Crisfield's cylindrical constraint |Delta u| = ds), so
 // the path passes maxima of the load (limit points) where load control
 // stops, and t may decrease along it. Knows nothing of elasticity: it works
-// on a ContinuationSystem.
+// on a SteppedSystem with the ContinuationSystem and TangentSystem
+// capabilities.
 //
 // A step from the converged (u_n, t_n): the tangent predictor du/dt from
 // K du_t = -dr/dt, scaled to ds, its sign that of the last step's increment
@@ -25,6 +26,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
+#include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/solvers/load_stepping.h>
 
 #include <functional>
@@ -40,11 +42,15 @@ namespace hyperelastic
                      dealii::ConditionalOStream    pcout);
 
     /// Follows the path from (0, 0) and calls @p on_converged after each
-    /// converged step (with the stability estimate at it). Throws
+    /// converged step (with the stability estimate at it); @p continuation
+    /// and @p tangent are @p system's capabilities. Throws
     /// ConvergenceFailure when ds would fall below 'Minimum increment'
-    /// times the first one.
-    void
-    run(SteppedSystem &system,
+    /// times the first one. Returns false, having taken no step, where the
+    /// loads move nothing (dr/dt = 0 at the start): nothing to follow.
+    bool
+    run(SteppedSystem      &system,
+        ContinuationSystem &continuation,
+        TangentSystem      &tangent,
         const std::function<void(const LoadStep &, const NewtonResult &)>
           &on_converged) const;
 
@@ -54,15 +60,88 @@ namespace hyperelastic
     /// continue). Fills @p delta and @p t and the result's rows; throws
     /// ConvergenceFailure on failure.
     NewtonResult
-    step(SteppedSystem    &system,
-         const VectorType &u_n,
-         double            t_n,
-         const VectorType &du_t,
-         double            ds,
-         double            sign,
-         double            land_at,
-         VectorType       &delta,
-         double           &t) const;
+    step(SteppedSystem      &system,
+         ContinuationSystem &continuation,
+         TangentSystem      &tangent,
+         const VectorType   &u_n,
+         double              t_n,
+         const VectorType   &du_t,
+         double              ds,
+         double              sign,
+         double              land_at,
+         VectorType         &delta,
+         double             &t) const;
+
+    /// Where the path stands: the last converged state (u_n, t_n), the
+    /// predictor du/dt there with -dr/dt, the last step's increment and
+    /// the one being solved, the unloaded stiffness along the path.
+    struct Path
+    {
+      explicit Path(const VectorType &u)
+          : u_n(u)
+          , r_t(u)
+          , du_t(u)
+          , delta(u)
+          , last_delta(u)
+      {
+      }
+      VectorType u_n, r_t, du_t, delta, last_delta;
+      double     t_n       = 0.;
+      bool       have_last = false;
+      double     unloaded  = 0.;
+    };
+
+    /// The path's start at (0, 0): the predictor and the unloaded
+    /// stiffness in @p path; returns the first step's length (0 where the
+    /// loads move nothing: the system is then back at its converged state).
+    double
+    start(SteppedSystem      &system,
+          ContinuationSystem &continuation,
+          TangentSystem      &tangent,
+          Path               &path) const;
+
+    /// Prints the header of step @p number from @p t_n (length @p ds) and
+    /// returns the load factor it lands on (the maximum load factor where
+    /// the predicted @p dt_predicted, or @p land, would take it past; NaN:
+    /// none).
+    double
+    announce_step(unsigned int number,
+                  double       t_n,
+                  double       ds,
+                  double       dt_predicted,
+                  bool         land) const;
+
+    /// The step to @p t converged: it becomes the path's last converged
+    /// state (counted in @p step), with the next predictor and the
+    /// stability in @p result.
+    void
+    advance(SteppedSystem      &system,
+            ContinuationSystem &continuation,
+            TangentSystem      &tangent,
+            double              t,
+            Path               &path,
+            LoadStep           &step,
+            NewtonResult       &result) const;
+
+    /// The corrector's dt: the root of |delta + du_r + dt du_t| = ds (in
+    /// path_product()) whose increment turns least from @p delta; throws
+    /// ConvergenceFailure where there is no real one.
+    static double
+    constraint_root(const ContinuationSystem &continuation,
+                    const VectorType         &delta,
+                    const VectorType         &du_r,
+                    const VectorType         &du_t,
+                    double                    ds);
+
+    /// After the step of length @p ds from @p t_n failed with @p failure:
+    /// the halved length (a cut-back counted in @p step), or a
+    /// ConvergenceFailure below 'Minimum increment' times @p first_ds.
+    double
+    halved_length(const ConvergenceFailure &failure,
+                  double                    ds,
+                  double                    first_ds,
+                  double                    t_n,
+                  LoadStep                 &step) const;
 
     const LoadSteppingParameters parameters;
     const NewtonParameters       newton;

@@ -1,21 +1,16 @@
 // A capability that only some stepped systems have: a damping energy
 // c/2 (u - w)^T D (u - w) added to the potential (D a diagonal metric on the
 // free unknowns, w the centre), the pseudo-transient continuation of snap
-// sub-steps (SnapSequence). A separate interface, so that systems without
-// it need no empty hooks.
+// sub-steps (SnapSequence), where NonlinearSystem::Properties::damping.
 #pragma once
 
 namespace hyperelastic
 {
+  // capability interface
   class DampedSystem
   {
   public:
     virtual ~DampedSystem() = default;
-
-    /// Whether the damping can be added (EquilibriumSystem: with a
-    /// potential, and no unheld bodies).
-    virtual bool
-    supports_damping() const = 0;
 
     /// Sets the damping @p c (0: none) centred at the current iterate: the
     /// forces, tangent and energy include it until it is set again.

@@ -7,8 +7,11 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <hyperelastic/base/linear_algebra.h>
+#include <hyperelastic/solvers/continuation_system.h>
 #include <hyperelastic/solvers/load_stepping_parameters.h>
 #include <hyperelastic/solvers/newton_solver.h>
+#include <hyperelastic/solvers/nonlinear_system.h>
+#include <hyperelastic/solvers/tangent_system.h>
 
 #include <functional>
 #include <string>
@@ -24,52 +27,6 @@ namespace hyperelastic
     return text.substr(0, text.find('\n'));
   }
 
-  /// The hooks of arc-length continuation, where the load factor t is an
-  /// unknown next to u: states (u, t), the free residual and its derivative
-  /// in t, and solves with the tangent.
-  class ContinuationSystem
-  {
-  public:
-    virtual ~ContinuationSystem() = default;
-
-    /// Makes (@p u, @p t) the state: u's free entries from @p u (owned
-    /// entries), its prescribed entries at their values at t. Collective.
-    virtual void
-    set_state(const VectorType &u, double t) = 0;
-
-    /// u of the state (owned entries).
-    virtual const VectorType &
-    state() const = 0;
-
-    /// The residual f_int - f_ext of the state on the free unknowns (zero
-    /// on prescribed rows) into @p r, and Newton's norms of it.
-    virtual ResidualNorms
-    free_residual(VectorType &r) = 0;
-
-    /// dr/dt at fixed free unknowns (the loads and the prescribed values
-    /// move with t), at the state, into @p r_t. Collective.
-    virtual void
-    load_derivative(VectorType &r_t) = 0;
-
-    /// Assembles the tangent at the state (prescribed rows decoupled).
-    virtual void
-    assemble_tangent() = 0;
-
-    /// Solves K x = b (b zero on prescribed rows, x too) with the last
-    /// assembled tangent, to the linear solver's tolerance; returns the
-    /// Krylov iterations.
-    virtual unsigned int
-    solve_tangent(const VectorType &b, VectorType &x) = 0;
-
-    /// The inner product the arc length is measured in: over the
-    /// displacements (a mixed formulation's pressures left out).
-    virtual double
-    path_product(const VectorType &a, const VectorType &b) const
-    {
-      return a * b;
-    }
-  };
-
   /// The tangent's stiffness along the path at the system's state: du/dt
   /// from K du_t = -dr/dt into @p du_t (assembling the tangent; @p r_t
   /// holds -dr/dt after), and the Rayleigh quotient du_t . K du_t /
@@ -79,21 +36,29 @@ namespace hyperelastic
   /// a stable path, zero at a maximum of the load, negative beyond (Bergan's
   /// current stiffness parameter, unnormalized). Collective.
   double
-  stiffness_along_path(ContinuationSystem &system,
+  stiffness_along_path(ContinuationSystem &continuation,
+                       TangentSystem      &tangent,
                        VectorType         &r_t,
                        VectorType         &du_t);
 
   /// A nonlinear system that depends on a load factor and can return to its
-  /// last converged state.
-  class SteppedSystem : public NonlinearSystem, public ContinuationSystem
+  /// last converged state: what the load stepper drives.
+  class SteppedSystem : public NonlinearSystem
   {
   public:
+    /// Starts a step to the load factor (or time) @p t from the last
+    /// converged state: the step's predictor becomes the iterate.
     virtual void
     set_load_factor(double t) = 0;
+    /// The current iterate becomes the last converged state.
     virtual void
     store_converged_state() = 0;
+    /// Back to the last converged state (after a failed attempt).
     virtual void
     restore_converged_state() = 0;
+    /// u of the current iterate (owned entries).
+    virtual const VectorType &
+    state() const = 0;
   };
 
   /// How a converged load step was reached.
@@ -123,6 +88,17 @@ namespace hyperelastic
     unsigned int easy_steps = 0;
   };
 
+  /// What the steps advance: the load factor (quasi-static, "Load step
+  /// k") or time (implicit dynamics, "Time step k").
+  enum class StepVariable
+  {
+    load_factor,
+    time
+  };
+
+  /// The steps of a scene: load control (LoadControl: cut-backs, snap
+  /// steps and sub-steps) or arc-length continuation (ArcLengthStepper)
+  /// over the load factor, load control over time.
   class LoadStepper
   {
   public:
@@ -150,27 +126,10 @@ namespace hyperelastic
         const ResumePoint *resume = nullptr) const;
 
   private:
-    /// Load control: the loop over t with cut-backs.
-    void
-    run_load_control(
-      const NewtonSolver &newton,
-      SteppedSystem      &system,
-      const std::function<void(const LoadStep &, const NewtonResult &)>
-                        &on_converged,
-      const ResumePoint *resume) const;
-
-    /// Load control gave up after the step from @p t failed: if the
-    /// tangent's stiffness along the path (stiffness_along_path()) at the
-    /// last converged state has fallen below a tenth of the unloaded one's,
-    /// the load passed a maximum: a sentence saying so (empty otherwise).
-    std::string
-    limit_point_diagnosis(SteppedSystem &system, double t) const;
-
     const LoadSteppingParameters parameters;
+    const StepVariable           variable;
     const double                 end;
     const double                 nominal;
     dealii::ConditionalOStream   pcout;
-    /// "Load step" or "Time step".
-    const std::string label;
   };
 } // namespace hyperelastic

@@ -9,10 +9,6 @@ namespace hyperelastic
 {
   using dealii::ParameterHandler;
 
-  struct ContactParameters;
-  struct ProblemParameters;
-  struct TimeIntegrationParameters;
-
   /// How the load factor advances ('Load stepping/Method').
   enum class LoadControl
   {
@@ -48,13 +44,4 @@ namespace hyperelastic
     void
     parse(ParameterHandler &prm);
   };
-
-  /// What 'Load stepping/Method = arc length' continues: a quasi-static path
-  /// of the displacement formulation without contact (an InputError naming
-  /// the entry otherwise).
-  void
-  check_arc_length(const LoadSteppingParameters    &load_stepping,
-                   const TimeIntegrationParameters &time_integration,
-                   const ContactParameters         &contact,
-                   const ProblemParameters         &problem);
 } // namespace hyperelastic

@@ -67,13 +67,4 @@ namespace hyperelastic
     void
     parse(ParameterHandler &prm);
   };
-
-  struct MaterialParameters;
-
-  /// 'Inverted elements at equilibrium = warn' accepts states with J <= 0:
-  /// only for a model defined there (an InputError naming the entry
-  /// otherwise).
-  void
-  check_inverted_elements(const NewtonParameters   &newton,
-                          const MaterialParameters &material);
 } // namespace hyperelastic

@@ -26,7 +26,7 @@ namespace hyperelastic
     bool projected_where_inverted = false;
     /// The predictor's update inverted cells and was replaced by the
     /// increment extended at zero Poisson's ratio
-    /// (NonlinearSystem::solve_linearization).
+    /// (PredictorSoftening).
     bool softened_predictor = false;
     /// The trust region's radius this iteration was solved in (NaN: a
     /// Newton step with line search, no trust region).

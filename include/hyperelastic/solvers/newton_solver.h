@@ -1,7 +1,9 @@
 // Newton's method with a backtracking line search on the total potential
 // energy (or, for a system without one, on the residual norm), for a
-// nonlinear system it knows only through the NonlinearSystem interface:
-// nothing here is specific to elasticity.
+// nonlinear system it knows only through the NonlinearSystem interface and
+// the capabilities the system may have beside it (a trust region, lagged
+// quantities, a softened predictor): nothing here is specific to
+// elasticity.
 #pragma once
 
 #include <deal.II/base/conditional_ostream.h>
@@ -10,9 +12,13 @@
 #include <hyperelastic/base/lagged_update.h>
 #include <hyperelastic/base/tangent_projection_mode.h>
 #include <hyperelastic/solvers/convergence_test.h>
+#include <hyperelastic/solvers/lagged_system.h>
 #include <hyperelastic/solvers/newton_parameters.h>
 #include <hyperelastic/solvers/newton_result.h>
+#include <hyperelastic/solvers/nonlinear_system.h>
+#include <hyperelastic/solvers/predictor_softening.h>
 #include <hyperelastic/solvers/tangent_policy.h>
+#include <hyperelastic/solvers/trust_region_system.h>
 
 #include <limits>
 #include <string>
@@ -20,222 +26,6 @@
 
 namespace hyperelastic
 {
-  /// What is known of a trial iterate u + alpha du.
-  struct TrialPoint
-  {
-    /// False if the iterate is outside the model's domain (an element with
-    /// J <= 0 for a model undefined there) or its energy is not finite.
-    bool admissible = true;
-    /// Total potential energy (NaN if it was not asked for).
-    double energy = std::numeric_limits<double>::quiet_NaN();
-    /// Round-off level of the energy: differences below it are noise.
-    double energy_noise = 0.;
-    /// Smallest J of the iterate (NaN if it was not computed).
-    double min_J = std::numeric_limits<double>::quiet_NaN();
-    /// Residual norm on the free unknowns (NaN if it was not asked for),
-    /// and its round-off level.
-    double residual       = std::numeric_limits<double>::quiet_NaN();
-    double residual_noise = 0.;
-  };
-
-  /// What Newton needs from a problem. Every call is collective: all ranks
-  /// make the same calls and get the same answers.
-  class NonlinearSystem
-  {
-  public:
-    virtual ~NonlinearSystem() = default;
-
-    /// What Newton needs to know of the system once per solve.
-    struct Properties
-    {
-      /// The residual is linear in the unknowns: the first Newton step,
-      /// solved to the linear solver's tolerance, is the solution.
-      bool linear = false;
-      /// The system has a total potential energy (its residual is the
-      /// energy's gradient). Without one the line search tests the residual
-      /// norm instead.
-      bool has_potential = true;
-      /// Why there is no potential (for the Newton table).
-      std::string why_no_potential = "a load has no potential";
-      /// The load factor moves only prescribed values (and obstacles): no
-      /// force scales with it, so every load factor has an energy minimum,
-      /// and a step past a fold may snap to it (LoadStepper).
-      bool displacement_controlled = false;
-    };
-
-    /// The system's Properties; they do not change during a solve.
-    virtual Properties
-    properties() const
-    {
-      return Properties();
-    }
-
-    /// Linearize at the current iterate. With @p impose_constraint_increment
-    /// the next update must also move the constrained unknowns from their
-    /// current to their prescribed values. Returns whether that increment is
-    /// non-zero anywhere (false without @p impose_constraint_increment).
-    /// @p projection says where dP/dF is made positive semi-definite
-    /// (projected Newton: everywhere, and the direction descends).
-    virtual bool
-    assemble_linearization(bool              impose_constraint_increment,
-                           TangentProjection projection) = 0;
-
-    /// What solve_linearization() did.
-    struct LinearizationSolve
-    {
-      /// Krylov iterations, added as each solve returns (those of the
-      /// solves before a failure stay counted).
-      unsigned int linear_iterations = 0;
-      /// The predictor's update was replaced by a gentler extension of the
-      /// constraint increment (set only when asked for).
-      bool softened_predictor = false;
-      /// Asked by Newton (where supports_trust_region()): the Krylov
-      /// method stops where it meets negative curvature, and says so in
-      /// negative_curvature; du is then not a Newton direction.
-      bool watch_curvature    = false;
-      bool negative_curvature = false;
-    };
-
-    /// Solve the linearized system for the direction du, with a Krylov
-    /// method to the relative tolerance @p forcing (0: as accurately as the
-    /// linear solver is set up to; the system never solves more loosely
-    /// than asked). Adds the Krylov iterations to @p solve.
-    ///
-    /// With @p soften_predictor (the automatic tangent policy's
-    /// request, for the linearization that imposes the constraint
-    /// increment: a load step's predictor): if the update would invert
-    /// cells of a state that has none, the system may replace it by a
-    /// gentler extension of the increment into the body, and sets
-    /// @p solve.softened_predictor to whether it did (the Krylov iterations
-    /// spent on trying count too).
-    virtual void
-    solve_linearization(double              forcing,
-                        bool                soften_predictor,
-                        LinearizationSolve &solve) = 0;
-
-    /// Whether solve_linearization_in_trust_region() is available (a
-    /// potential and a Krylov solver that can follow negative curvature).
-    virtual bool
-    supports_trust_region() const
-    {
-      return false;
-    }
-
-    /// What solve_linearization_in_trust_region() found.
-    struct TrustRegionStep
-    {
-      /// The Krylov method met negative curvature: the tangent is
-      /// indefinite, and du follows such a direction to the boundary.
-      bool negative_curvature = false;
-      /// |du| = radius.
-      bool on_boundary = false;
-      /// du^T K du: the quadratic model predicts the energy change
-      /// alpha g^T du + alpha^2 curvature / 2 for the step alpha du.
-      double curvature = 0.;
-      /// |du|.
-      double norm = 0.;
-    };
-
-    /// Like solve_linearization() (never for the linearization that
-    /// imposes the constraint increment), but du approximately minimizes
-    /// the tangent's quadratic model of the energy within |du| <= @p radius
-    /// (Steihaug-Toint truncated CG): along a direction of negative
-    /// curvature it goes to the boundary instead of failing. Only where
-    /// supports_trust_region().
-    virtual void
-    solve_linearization_in_trust_region(double              forcing,
-                                        double              radius,
-                                        LinearizationSolve &solve,
-                                        TrustRegionStep    &step)
-    {
-      (void)forcing;
-      (void)radius;
-      (void)solve;
-      (void)step;
-      Assert(false, dealii::ExcNotImplemented());
-    }
-
-    /// Whether the exact tangent at the current iterate has a direction of
-    /// negative curvature (a saddle, not a minimum), as far as a Krylov
-    /// probe finds one (truncated CG from a fixed pseudo-random right-hand
-    /// side). Only where supports_trust_region(); overwrites the last
-    /// linearization.
-    virtual bool
-    has_negative_curvature()
-    {
-      Assert(false, dealii::ExcNotImplemented());
-      return false;
-    }
-
-    /// Derivative of the energy at the current iterate along du (negative for
-    /// a descent direction). Valid when du leaves the constraints unchanged.
-    virtual double
-    directional_derivative() const = 0;
-
-    /// The largest step length in (0, 1] along the last solved direction
-    /// that keeps the state feasible (no vertex through an obstacle); the
-    /// line search starts there. 1 by default.
-    virtual double
-    largest_feasible_step()
-    {
-      return 1.;
-    }
-
-    /// What evaluate_trial() must find out about a trial iterate.
-    enum class TrialCheck
-    {
-      none,          ///< nothing: plain Newton
-      admissibility, ///< whether it lies in the model's domain
-      energy,        ///< that, and its energy
-      residual       ///< that, and its residual norm
-    };
-
-    /// Evaluate u + alpha du.
-    virtual TrialPoint
-    evaluate_trial(double alpha, TrialCheck check) = 0;
-
-    /// Make the last evaluated trial the current iterate; returns the norm of
-    /// the step taken (alpha |du|).
-    virtual double
-    accept_trial() = 0;
-
-    /// The residual norms at the current iterate (after accept_trial()).
-    virtual ResidualNorms
-    residual_norms() = 0;
-
-    /// Size of the solution in the run so far (the largest norm reached),
-    /// for the relative update test.
-    virtual double
-    solution_scale() const = 0;
-
-    /// What judge_converged_state() decided.
-    enum class Verdict
-    {
-      accepted,          ///< the converged state stands
-      continue_iterating ///< the equations changed: Newton goes on
-    };
-
-    /// Called once Newton's tests pass. With @p update_lagged, first updates
-    /// quantities the equations lag behind the iterate (friction's normal
-    /// forces and tangents): if they changed enough that Newton must go on
-    /// from the current iterate (the energy changed), returns
-    /// continue_iterating. Otherwise checks the converged state: throws
-    /// ConvergenceFailure if it is not acceptable (for example inverted
-    /// elements), and returns accepted.
-    virtual Verdict
-    judge_converged_state(bool update_lagged) = 0;
-
-    /// Before convergence, once the residual is small: updates the lagged
-    /// quantities at the current iterate as judge_converged_state() would;
-    /// returns whether they changed (updated: the energy of the current
-    /// iterate is new) or changed too little. Nothing changes by default.
-    virtual LaggedUpdate
-    update_lagged()
-    {
-      return LaggedUpdate::unchanged;
-    }
-  };
-
   /// Newton's method with a backtracking line search for a NonlinearSystem:
   /// the tangent from a TangentPolicy, inexact linear solves with
   /// Eisenstat-Walker forcing terms, the ConvergenceTest, and the Newton
@@ -295,6 +85,11 @@ namespace hyperelastic
     /// What a solve carries from one iteration to the next.
     struct SolveState
     {
+      /// The system's capabilities beside NonlinearSystem, found once per
+      /// solve (null where it does not have one).
+      TrustRegionSystem  *trust_region = nullptr;
+      LaggedSystem       *lagged       = nullptr;
+      PredictorSoftening *softening    = nullptr;
       /// True until a full step has moved the constrained unknowns to their
       /// prescribed values. Until then the energy cannot be compared
       /// between iterates (each satisfies different constraints), so the
@@ -337,6 +132,59 @@ namespace hyperelastic
       double step_start_residual = std::numeric_limits<double>::quiet_NaN();
     };
 
+    /// How the current iteration is solved: the tangent's projection, the
+    /// trust region, the forcing term's parts.
+    struct IterationPlan
+    {
+      TangentProjection projection = TangentProjection::none;
+      /// The smallest J of the current iterate (NaN before the first
+      /// iteration).
+      double min_J = 0.;
+      /// The Eisenstat-Walker term, and whether this iteration imposes the
+      /// constraint increment (a predictor, solved fully).
+      double eisenstat_walker = 0.;
+      bool   predictor        = false;
+      /// The iteration is solved in the trust region; it was tried.
+      bool in_trust_region    = false;
+      bool trust_region_tried = false;
+    };
+
+    /// The relative Krylov tolerance of an iteration planned as @p plan.
+    double
+    iteration_forcing(const NonlinearSystem::Properties &properties,
+                      const IterationPlan               &plan) const;
+
+    /// Whether the iteration may go on in the trust region with
+    /// @p projection (Newton/Follow negative curvature, a system that has
+    /// one, not a predictor).
+    bool
+    trust_region_allowed(const NonlinearSystem::Properties &properties,
+                         const TangentPolicy               &policy,
+                         const SolveState                  &state,
+                         TangentProjection                  projection) const;
+
+    /// Sets SolveState::trust_radius where it is not set yet; returns
+    /// whether there is one.
+    bool
+    start_trust_region(NonlinearSystem                    &system,
+                       SolveState                         &state,
+                       const std::vector<NewtonIteration> &history) const;
+
+    /// attempt() (or attempt_trust_region()) and, while that fails, the
+    /// trust region once and then the policy's fallbacks from the same
+    /// iterate; throws ConvergenceFailure once none is left. The step taken
+    /// is the system's last evaluated trial.
+    void
+    attempt_until_taken(NonlinearSystem                     &system,
+                        const NonlinearSystem::Properties   &properties,
+                        const TangentPolicy                 &policy,
+                        unsigned int                         it,
+                        SolveState                          &state,
+                        const NewtonResult                  &result,
+                        IterationPlan                       &plan,
+                        NewtonIteration                     &row,
+                        NonlinearSystem::LinearizationSolve &solve) const;
+
     /// One iteration from the current iterate: the projection @p policy
     /// chooses, then attempt() and, while that fails, attempt() again from
     /// the same iterate with the policy's fallback; throws
@@ -354,7 +202,7 @@ namespace hyperelastic
     /// row.forcing and search along the direction. @p soften_predictor: the
     /// tangent policy asks for the softened predictor, which the system is
     /// asked for when this linearization imposes the constraint increment
-    /// (NonlinearSystem::solve_linearization). Returns false (and the
+    /// (PredictorSoftening, where the system has it). Returns false (and the
     /// reason) if the line search or the linear solve failed; the Krylov
     /// iterations add up in @p solve.
     bool
@@ -366,6 +214,11 @@ namespace hyperelastic
             NewtonIteration                     &row,
             NonlinearSystem::LinearizationSolve &solve,
             std::string                         &failure) const;
+
+    /// Whether the residual at the current iterate already meets Newton's
+    /// target (assembles the forces there).
+    bool
+    in_equilibrium(NonlinearSystem &system) const;
 
     /// The automatic tangent's answer to an indefinite tangent: linearize
     /// with @p projection, solve in the trust region of

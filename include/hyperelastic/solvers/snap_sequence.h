@@ -47,12 +47,15 @@ namespace hyperelastic
     /// that state, without damping. Throws ConvergenceFailure when the
     /// budget is spent or a sub-step fails with the largest damping tried;
     /// the system is then at its last converged state (the last accepted
-    /// sub-step's, if any), without damping.
+    /// sub-step's, if any), without damping. @p damped and @p states are
+    /// @p system's capabilities (the damping, and states set from outside
+    /// for the undamped residual at a sub-step).
     void
-    run(SteppedSystem &system,
-        DampedSystem  &damped,
-        double         t,
-        const Accept  &accept) const;
+    run(SteppedSystem      &system,
+        DampedSystem       &damped,
+        ContinuationSystem &states,
+        double              t,
+        const Accept       &accept) const;
 
     /// The factor by which c rises after a failed sub-step, and the most
     /// the residual ratio may change it by after a converged one.
@@ -68,6 +71,9 @@ namespace hyperelastic
     static constexpr unsigned int easy_sub_step = 4;
 
   private:
+    /// One run: its state, the damped sub-steps and the undamped solves.
+    class Run;
+
     /// The stepper's Newton with negative curvature followed (the
     /// sub-steps and the undamped solves pass saddles): for the damped
     /// sub-steps, and for the undamped solves, which start near an

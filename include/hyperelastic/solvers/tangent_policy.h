@@ -59,7 +59,7 @@ namespace hyperelastic
 
     /// Whether the predictor's update may be replaced by a gentler
     /// extension of the constraint increment where it would invert cells
-    /// (NonlinearSystem::solve_linearization): asked by the automatic
+    /// (PredictorSoftening): asked by the automatic
     /// tangent only.
     bool
     softens_inverting_predictor() const;

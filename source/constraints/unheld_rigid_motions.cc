@@ -6,9 +6,9 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <hyperelastic/constraints/unheld_rigid_motions.h>
 #include <hyperelastic/materials/tangent_projection.h>
 #include <hyperelastic/mesh/bodies.h>
-#include <hyperelastic/solvers/unheld_rigid_motions.h>
 
 #include <algorithm>
 #include <cmath>
@@ -60,9 +60,9 @@ namespace hyperelastic
 
     // The displacement nodes: support point j of the first base element,
     // its dim unknowns component_to_system_index(c, j).
-    const FiniteElement<dim> &fe = dof_handler.get_fe();
-    const unsigned int n_nodes   = fe.base_element(0).n_dofs_per_cell();
-    FEValues<dim>      fe_values(mapping,
+    const FiniteElement<dim> &fe      = dof_handler.get_fe();
+    const unsigned int        n_nodes = fe.base_element(0).n_dofs_per_cell();
+    FEValues<dim>             fe_values(mapping,
                             fe,
                             Quadrature<dim>(fe.get_unit_support_points()),
                             update_quadrature_points);
@@ -183,9 +183,9 @@ namespace hyperelastic
         // Resisted: an eigenvalue of the order of the supports' stiffness
         // (the largest one: a plate pressing along its normal). A support
         // that only nearly resists counts as none.
-        const double resisted =
-          frictional ? 1e-6 * body.scale
-                     : std::max(1e-6 * body.scale, 1e-2 * largest);
+        const double resisted = frictional
+                                  ? 1e-6 * body.scale
+                                  : std::max(1e-6 * body.scale, 1e-2 * largest);
         for (unsigned int k = 0; k < n_modes; ++k)
           {
             if (!(values[k] <= resisted) ||
@@ -302,9 +302,9 @@ namespace hyperelastic
   template <int dim>
   void
   UnheldRigidMotions<dim>::constrain_update(
-    const VectorType                                             &u,
+    const VectorType                                            &u,
     const std::function<void(const VectorType &, VectorType &)> &solve,
-    VectorType                                                   &update) const
+    VectorType                                                  &update) const
   {
     const std::vector<VectorType> V = pinned_motions(u);
     const unsigned int            k = V.size();

@@ -36,6 +36,7 @@
 #include <deal.II/fe/mapping.h>
 
 #include <hyperelastic/base/linear_algebra.h>
+#include <hyperelastic/constraints/system_constraint.h>
 #include <hyperelastic/solvers/rigid_body_modes.h>
 
 #include <array>
@@ -46,7 +47,7 @@
 namespace hyperelastic
 {
   template <int dim>
-  class UnheldRigidMotions
+  class UnheldRigidMotions : public SystemConstraint
   {
   public:
     /// The bodies of the mesh without a boundary face among
@@ -56,10 +57,11 @@ namespace hyperelastic
     /// below 1e-10 of the forces' size) are pinned: friction's stiffness
     /// along the contact surfaces, however small against the normal one,
     /// is a support. Collective.
-    UnheldRigidMotions(const dealii::Mapping<dim>                 &mapping,
-                       const dealii::DoFHandler<dim>              &dof_handler,
-                       const std::set<dealii::types::boundary_id> &dirichlet_ids,
-                       bool frictional = false);
+    UnheldRigidMotions(
+      const dealii::Mapping<dim>                 &mapping,
+      const dealii::DoFHandler<dim>              &dof_handler,
+      const std::set<dealii::types::boundary_id> &dirichlet_ids,
+      bool                                        frictional = false);
 
     /// Whether the mesh has no unheld body (the same on every rank).
     bool
@@ -72,7 +74,7 @@ namespace hyperelastic
     /// displacement unknowns (and remembers beta and the tangent's scale).
     /// Collective.
     void
-    regularize(MatrixType &tangent);
+    regularize(MatrixType &tangent) override;
 
     /// Finds the unresisted rigid motions of each unheld body at the
     /// positions X + @p u from the (regularized) @p tangent, with the force
@@ -92,9 +94,25 @@ namespace hyperelastic
     /// Collective.
     void
     constrain_update(
-      const VectorType                                             &u,
+      const VectorType                                            &u,
       const std::function<void(const VectorType &, VectorType &)> &solve,
-      VectorType                                                   &update) const;
+      VectorType &update) const override;
+
+    // SystemConstraint: the unresisted motions pinned before a solve, and
+    // removed from a residual, right-hand side or direction.
+    void
+    prepare_solve(const VectorType &u,
+                  const MatrixType &tangent,
+                  const VectorType &rhs,
+                  double            force_scale) override
+    {
+      pin_unresisted(u, tangent, rhs, force_scale);
+    }
+    void
+    project_out(const VectorType &u, VectorType &v) const override
+    {
+      project_out_pinned(u, v);
+    }
 
     /// Removes from @p v its components along the pinned motions at
     /// X + @p u (owned entries suffice) and returns the norm of what it

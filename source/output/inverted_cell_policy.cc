@@ -1,7 +1,7 @@
 // The solver's verdict on the inverted cells of a converged state: the
 // warning that accepts it or the ConvergenceFailure that rejects it.
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/solvers/inverted_cell_policy.h>
+#include <hyperelastic/output/inverted_cell_policy.h>
 
 #include <sstream>
 
