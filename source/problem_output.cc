@@ -190,15 +190,12 @@ namespace hyperelastic
     const StepSummary<dim> summary = summarize(step, result);
     writer->write_summary(summary.columns());
     const unsigned int every = parameters.output.checkpoint_every;
-    // A snap sub-step's state is no equilibrium to resume from.
-    if (every > 0 && step.step % every == 0 && !step.snap_sub_step)
+    if (every > 0 && step.step % every == 0)
       write_checkpoint(step);
     step_summaries.push_back(summary);
     if (step_observer)
       step_observer(summary);
-    pcout << (step.snap_sub_step ? "   snap sub-step accepted after "
-                                 : "   converged in ")
-          << result.iterations() << " Newton iterations ("
+    pcout << "   converged in " << result.iterations() << " Newton iterations ("
           << result.linear_iterations() << " linear";
     if (summary.backtracks > 0)
       pcout << ", " << summary.backtracks << " line-search backtracks";

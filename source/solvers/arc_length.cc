@@ -25,25 +25,22 @@ namespace hyperelastic
   ArcLengthStepper::step(SteppedSystem      &system,
                          ContinuationSystem &continuation,
                          TangentSystem      &tangent,
-                         const VectorType   &u_n,
-                         const double        t_n,
-                         const VectorType   &du_t0,
+                         Path               &path,
                          const double        ds,
                          const double        sign,
                          const double        land_at,
-                         VectorType         &delta,
                          double             &t) const
   {
-    const bool landing = std::isfinite(land_at);
+    const VectorType &u_n     = path.u_n;
+    VectorType       &delta   = path.delta;
+    const bool        landing = std::isfinite(land_at);
     // Predictor: along du/dt, |Delta u| = ds (landing: to t = land_at).
     const double dt0 =
-      landing ? land_at - t_n
-              : sign * ds /
-                  std::max(std::sqrt(continuation.path_product(du_t0, du_t0)),
-                           1e-300);
-    delta = du_t0;
+      landing ? land_at - path.t_n
+              : sign * ds / std::max(path_length(continuation, path), 1e-300);
+    delta = path.du_t;
     delta *= dt0;
-    t = t_n + dt0;
+    t = path.t_n + dt0;
     VectorType   trial(u_n), r(u_n), r_t(u_n), du_r(u_n), du_t(u_n);
     NewtonResult result;
     double       last_update = std::numeric_limits<double>::infinity();
@@ -64,10 +61,10 @@ namespace hyperelastic
             "the residual is not finite (an element may have inverted with "
             "a model undefined there)");
         if (it > 1 &&
-            ConvergenceTest(newton).converged(
-              norms,
-              last_update,
-              std::max(system.solution_scale(), trial.l2_norm())))
+            ConvergenceTest(newton).converged(norms,
+                                              last_update,
+                                              std::max(system.solution_scale(),
+                                                       trial.l2_norm())))
           {
             result.history.back().residual = norms.residual;
             return result;
@@ -181,33 +178,22 @@ namespace hyperelastic
         // Along the last step's way (the sign of det K changes at a limit
         // point, so the tangent alone cannot tell it).
         const double sign =
-          !path.have_last ||
-              continuation.path_product(path.du_t, path.last_delta) >= 0.
-            ? 1.
-            : -1.;
+          path.have_last &&
+              continuation.path_product(path.du_t, path.last_delta) < 0.
+            ? -1.
+            : 1.;
         const double land_at =
           announce_step(step.step + 1,
-                        path.t_n,
+                        path,
                         ds,
-                        sign * ds /
-                          std::sqrt(
-                            continuation.path_product(path.du_t, path.du_t)),
+                        sign * ds / path_length(continuation, path),
                         land);
         double       t = path.t_n;
         NewtonResult result;
         try
           {
-            result = this->step(system,
-                                continuation,
-                                tangent,
-                                path.u_n,
-                                path.t_n,
-                                path.du_t,
-                                ds,
-                                sign,
-                                land_at,
-                                path.delta,
-                                t);
+            result = this->step(
+              system, continuation, tangent, path, ds, sign, land_at, t);
             // Arc length does not lag quantities behind the iterate: the
             // converged state is only checked.
             system.judge_converged_state();
@@ -278,12 +264,20 @@ namespace hyperelastic
   }
 
   double
+  ArcLengthStepper::path_length(const ContinuationSystem &continuation,
+                                const Path               &path)
+  {
+    return std::sqrt(continuation.path_product(path.du_t, path.du_t));
+  }
+
+  double
   ArcLengthStepper::announce_step(const unsigned int number,
-                                  const double       t_n,
+                                  const Path        &path,
                                   const double       ds,
                                   const double       dt_predicted,
                                   const bool         land) const
   {
+    const double t_n = path.t_n;
     // Land on the maximum load factor rather than pass it upwards.
     const double land_at =
       (t_n < parameters.maximum_load_factor &&

@@ -121,10 +121,13 @@ namespace hyperelastic
                                   const double              t_next,
                                   const double              attempted)
   {
-    // The snap goes on in sub-steps from the last converged state, each a
-    // step of its own; the last one, an undamped equilibrium, ends the
-    // snap.
+    // The snap goes on in sub-steps from the last converged state; the
+    // last one, an undamped equilibrium, ends the snap and is the step's
+    // state. The sub-steps before it are pseudo time steps, no equilibria:
+    // the sequence goes on from each, but none is reported (no CSV row, no
+    // frame, no checkpoint); the log keeps them.
     system.restore_converged_state();
+    pseudo_state = false;
     ++step.cut_backs;
     pcout << "   cut-back " << step.cut_backs
           << ": the snap step failed: " << first_line(failure.what())
@@ -142,16 +145,22 @@ namespace hyperelastic
                    const unsigned int  failed,
                    const bool          final) {
                  step.cut_backs += failed;
-                 step.snap_sub_step = !final;
-                 accept(sub, t_next, attempted);
-                 step.snap_sub_step = false;
-                 if (!final)
-                   print_header(t_next, attempted, ", snap sub-step");
+                 if (final)
+                   {
+                     accept(sub, t_next, attempted);
+                     return;
+                   }
+                 system.store_converged_state();
+                 pseudo_state = true;
+                 pcout << "   snap sub-step accepted after " << sub.iterations()
+                       << " Newton iterations (" << sub.linear_iterations()
+                       << " linear): a pseudo time step, not reported"
+                       << std::endl;
                });
       }
     catch (const ConvergenceFailure &sub_failure)
       {
-        if (t != snapped_from)
+        if (pseudo_state)
           throw;
         // Sub-steps that fail before one is accepted leave the snap step's
         // own failure as the reason (the cut-backs go on, and the message
@@ -196,15 +205,14 @@ namespace hyperelastic
     system.restore_converged_state();
     easy_steps_in_a_row = 0;
     double smaller      = 0.5 * attempted;
-    if (next == Attempt::snap && t != snapped_from)
+    if (next == Attempt::snap && pseudo_state)
       // Sub-steps were accepted, but no equilibrium follows them: the
-      // state at t is a pseudo time step's, not one to go on from.
+      // system's state is a pseudo time step's, not one to go on from.
       throw ConvergenceFailure(
-        "load step to t = " + std::to_string(t) +
+        "load step to t = " + std::to_string(t_next) +
         ": the snap sub-steps ended without an equilibrium: " +
-        std::string(failure.what()) +
-        "; the last accepted state is a snap sub-step's (load step " +
-        std::to_string(step.step) + ")");
+        std::string(failure.what()) + "; the last equilibrium is t = " +
+        std::to_string(t) + " (load step " + std::to_string(step.step) + ")");
     if (next == Attempt::snap)
       {
         // The snap did not work: the cut-backs go on where they stopped.

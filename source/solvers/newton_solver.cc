@@ -741,15 +741,26 @@ namespace hyperelastic
         state.target = convergence.residual_target(norms);
         if (it == 1 && state.loose_reduction > 0.)
           state.loose_target = state.loose_reduction * norms.residual;
-        if (finished(system,
-                     properties,
-                     convergence,
-                     norms,
-                     result.history.back(),
-                     it,
-                     state,
-                     policy))
-          return result;
+        try
+          {
+            if (finished(system,
+                         properties,
+                         convergence,
+                         norms,
+                         result.history.back(),
+                         it,
+                         state,
+                         policy))
+              return result;
+          }
+        catch (const ConvergenceFailure &failure)
+          {
+            // The system rejected the converged state: the solve used the
+            // iterations so far.
+            if (failure.newton_iterations() > 0)
+              throw;
+            throw ConvergenceFailure(failure.what(), it);
+          }
       }
     throw ConvergenceFailure("Newton did not converge in " +
                                std::to_string(max_iterations) +

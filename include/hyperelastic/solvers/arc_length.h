@@ -55,23 +55,6 @@ namespace hyperelastic
           &on_converged) const;
 
   private:
-    /// One step of length @p ds from (u_n, t_n) along the predictor
-    /// @p du_t (with sign @p sign); @p land_at: solve at this t instead (NaN:
-    /// continue). Fills @p delta and @p t and the result's rows; throws
-    /// ConvergenceFailure on failure.
-    NewtonResult
-    step(SteppedSystem      &system,
-         ContinuationSystem &continuation,
-         TangentSystem      &tangent,
-         const VectorType   &u_n,
-         double              t_n,
-         const VectorType   &du_t,
-         double              ds,
-         double              sign,
-         double              land_at,
-         VectorType         &delta,
-         double             &t) const;
-
     /// Where the path stands: the last converged state (u_n, t_n), the
     /// predictor du/dt there with -dr/dt, the last step's increment and
     /// the one being solved, the unloaded stiffness along the path.
@@ -91,6 +74,20 @@ namespace hyperelastic
       double     unloaded  = 0.;
     };
 
+    /// One step of length @p ds from the path's (u_n, t_n) along its
+    /// predictor du_t (with sign @p sign); @p land_at: solve at this t
+    /// instead (NaN: continue). Fills the path's delta, @p t and the
+    /// result's rows; throws ConvergenceFailure on failure.
+    NewtonResult
+    step(SteppedSystem      &system,
+         ContinuationSystem &continuation,
+         TangentSystem      &tangent,
+         Path               &path,
+         double              ds,
+         double              sign,
+         double              land_at,
+         double             &t) const;
+
     /// The path's start at (0, 0): the predictor and the unloaded
     /// stiffness in @p path; returns the first step's length (0 where the
     /// loads move nothing: the system is then back at its converged state).
@@ -100,13 +97,18 @@ namespace hyperelastic
           TangentSystem      &tangent,
           Path               &path) const;
 
-    /// Prints the header of step @p number from @p t_n (length @p ds) and
+    /// Prints the header of step @p number from the path's t_n (length
+    /// @p ds) and
     /// returns the load factor it lands on (the maximum load factor where
     /// the predicted @p dt_predicted, or @p land, would take it past; NaN:
     /// none).
+    /// |du/dt| of the path's predictor (path_product()).
+    static double
+    path_length(const ContinuationSystem &continuation, const Path &path);
+
     double
     announce_step(unsigned int number,
-                  double       t_n,
+                  const Path  &path,
                   double       ds,
                   double       dt_predicted,
                   bool         land) const;

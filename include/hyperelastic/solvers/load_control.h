@@ -131,5 +131,8 @@ namespace hyperelastic
     /// and the increment the cut-backs resume with if it fails.
     double snapped_from = -1.;
     double before_snap  = 0.;
+    /// The system's converged state is a snap sub-step's (a pseudo time
+    /// step of the current snap), not an equilibrium.
+    bool pseudo_state = false;
   };
 } // namespace hyperelastic

@@ -70,9 +70,6 @@ namespace hyperelastic
     /// Failed attempts (each followed by halving the increment) before this
     /// step converged.
     unsigned int cut_backs = 0;
-    /// A snap sub-step (SnapSequence): a pseudo time step's state, not an
-    /// equilibrium; no checkpoint is written there.
-    bool snap_sub_step = false;
     /// The stepper's state after this step (a checkpoint resumes from it).
     double       next_increment = 0.;
     unsigned int easy_steps     = 0; ///< easy steps in a row
