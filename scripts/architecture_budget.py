@@ -125,7 +125,7 @@ LIMITS = {
     # Lines of source/problem.cc.
     'problem.cc lines': 350,  # target 350 (issue 56): met
     # Functions over 120 lines outside parameter declarations.
-    'functions over 120 lines': 4,  # target 0 (issue 56); today's value
+    'functions over 120 lines': 0,  # target 0 (issue 56): met
     # Functions over 80 lines in solvers/ (outside parameter declarations).
     'solvers/ functions over 80 lines': 0,  # target 0 (issue 56): met
     # '#include <hyperelastic/PHYSICS/...>' in solvers/.

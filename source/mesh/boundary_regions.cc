@@ -62,6 +62,98 @@ namespace hyperelastic
         all.insert(ids.begin(), ids.end());
       return all;
     }
+
+    /// The distinct conditions of @p loading's sections, in the order of
+    /// the sections, each with the sections using it (ids still 0);
+    /// @p named_ids: the ids the sections name directly, each with the
+    /// first section naming it.
+    BoundaryRegions
+    distinct_regions(const LoadingParameters                   &loading,
+                     std::map<types::boundary_id, std::string> &named_ids)
+    {
+      BoundaryRegions result;
+      const auto      add = [&](const std::string       &condition,
+                           const std::string       &section,
+                           const types::boundary_id id) {
+        if (condition.empty())
+          {
+            named_ids.emplace(id, section);
+            return;
+          }
+        auto region = std::find_if(result.regions.begin(),
+                                   result.regions.end(),
+                                   [&](const BoundaryRegions::Region &r) {
+                                     return r.condition == condition;
+                                   });
+        if (region == result.regions.end())
+          result.regions.push_back({condition, 0, 0, {section}});
+        else
+          region->sections.push_back(section);
+      };
+      for (const DirichletCondition &c : loading.dirichlet)
+        add(c.boundary_region, c.subsection, c.boundary_id);
+      for (const BoundaryLoadSection &c : loading.boundary_loads)
+        add(c.boundary_region, c.subsection, c.boundary_id);
+      return result;
+    }
+
+    /// Gives every boundary face of the cells this rank sees (a face of a
+    /// ghost cell too: its id matters to the assembly of its neighbours'
+    /// ranks) the id of the region whose @p condition it satisfies, and
+    /// counts the owned ones; @p taken[r]: the ids region r took over,
+    /// @p local_ids: the ids of the owned boundary faces afterwards.
+    /// Returns the message of the first face two conditions select, or "".
+    template <int dim>
+    std::string
+    mark_region_faces(
+      Triangulation<dim>                                      &triangulation,
+      BoundaryRegions                                         &result,
+      const std::vector<std::unique_ptr<FunctionParser<dim>>> &condition,
+      std::vector<std::set<types::boundary_id>>               &taken,
+      std::set<types::boundary_id>                            &local_ids)
+    {
+      std::string problem;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          if (cell->is_artificial())
+            continue;
+          for (const unsigned int f : cell->face_indices())
+            {
+              if (!cell->at_boundary(f))
+                continue;
+              const auto       face   = cell->face(f);
+              const Point<dim> centre = face->center();
+              int              chosen = -1;
+              for (unsigned int r = 0; r < result.regions.size(); ++r)
+                if (condition[r]->value(centre) != 0.)
+                  {
+                    if (chosen >= 0 && problem.empty())
+                      {
+                        std::ostringstream where;
+                        where << entry_of(result.regions[r])
+                              << ": the boundary face with centre (" << centre
+                              << ") is also selected by "
+                              << entry_of(result.regions[chosen])
+                              << ": a face has one boundary id (make the "
+                                 "conditions exclusive, or use the same "
+                                 "condition in both sections)";
+                        problem = where.str();
+                      }
+                    chosen = r;
+                  }
+              if (chosen >= 0)
+                {
+                  taken[chosen].insert(face->boundary_id());
+                  face->set_boundary_id(result.regions[chosen].id);
+                  if (cell->is_locally_owned())
+                    ++result.regions[chosen].n_faces;
+                }
+              if (cell->is_locally_owned())
+                local_ids.insert(face->boundary_id());
+            }
+        }
+      return problem;
+    }
   } // namespace
 
   template <int dim>
@@ -70,33 +162,10 @@ namespace hyperelastic
                           LoadingParameters            &loading,
                           std::set<types::boundary_id> &mesh_ids)
   {
-    // The distinct conditions in the order of the sections.
-    BoundaryRegions result;
-    // The ids the sections name directly, each with the first section
-    // naming it.
+    // The distinct conditions in the order of the sections, and the ids
+    // the sections name directly.
     std::map<types::boundary_id, std::string> named_ids;
-    const auto add = [&](const std::string &condition,
-                         const std::string &section,
-                         const types::boundary_id id) {
-      if (condition.empty())
-        {
-          named_ids.emplace(id, section);
-          return;
-        }
-      auto region = std::find_if(result.regions.begin(),
-                                 result.regions.end(),
-                                 [&](const BoundaryRegions::Region &r) {
-                                   return r.condition == condition;
-                                 });
-      if (region == result.regions.end())
-        result.regions.push_back({condition, 0, 0, {section}});
-      else
-        region->sections.push_back(section);
-    };
-    for (const DirichletCondition &c : loading.dirichlet)
-      add(c.boundary_region, c.subsection, c.boundary_id);
-    for (const BoundaryLoadSection &c : loading.boundary_loads)
-      add(c.boundary_region, c.subsection, c.boundary_id);
+    BoundaryRegions result = distinct_regions(loading, named_ids);
     if (result.regions.empty())
       return result;
 
@@ -114,51 +183,11 @@ namespace hyperelastic
         condition.push_back(face_condition<dim>(region, loading.constants));
       }
 
-    // Every boundary face of the cells this rank sees (a face of a ghost
-    // cell too: its id matters to the assembly of its neighbours' ranks).
-    const MPI_Comm                  comm = triangulation.get_communicator();
-    std::string                     problem;
+    const MPI_Comm comm = triangulation.get_communicator();
     std::vector<std::set<types::boundary_id>> taken(result.regions.size());
-    std::set<types::boundary_id>    local_ids;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      {
-        if (cell->is_artificial())
-          continue;
-        for (const unsigned int f : cell->face_indices())
-          {
-            if (!cell->at_boundary(f))
-              continue;
-            const auto       face   = cell->face(f);
-            const Point<dim> centre = face->center();
-            int              chosen = -1;
-            for (unsigned int r = 0; r < result.regions.size(); ++r)
-              if (condition[r]->value(centre) != 0.)
-                {
-                  if (chosen >= 0 && problem.empty())
-                    {
-                      std::ostringstream where;
-                      where << entry_of(result.regions[r])
-                            << ": the boundary face with centre (" << centre
-                            << ") is also selected by "
-                            << entry_of(result.regions[chosen])
-                            << ": a face has one boundary id (make the "
-                               "conditions exclusive, or use the same "
-                               "condition in both sections)";
-                      problem = where.str();
-                    }
-                  chosen = r;
-                }
-            if (chosen >= 0)
-              {
-                taken[chosen].insert(face->boundary_id());
-                face->set_boundary_id(result.regions[chosen].id);
-                if (cell->is_locally_owned())
-                  ++result.regions[chosen].n_faces;
-              }
-            if (cell->is_locally_owned())
-              local_ids.insert(face->boundary_id());
-          }
-      }
+    std::set<types::boundary_id>              local_ids;
+    const std::string                         problem =
+      mark_region_faces(triangulation, result, condition, taken, local_ids);
     throw_input_error_of_first_rank(problem, comm);
 
     for (unsigned int r = 0; r < result.regions.size(); ++r)

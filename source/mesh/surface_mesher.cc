@@ -187,22 +187,18 @@ namespace hyperelastic
       return angle / (4. * std::acos(-1.));
     }
 
-    /// Each triangle's connected component (over shared edges), every
-    /// component oriented consistently and outward, except a component
-    /// inside another (a cavity), which faces into its cavity;
-    /// @p enclosing[c]: the component a cavity c lies in (the innermost),
-    /// or invalid for a body.
-    std::vector<unsigned int>
-    orient_components(SurfaceTriangles          &surface,
-                      const std::string         &where,
-                      unsigned int              &n_components,
-                      std::size_t               &n_turned,
-                      std::vector<unsigned int> &enclosing)
+    /// Per undirected edge: the (at most two) triangles using it.
+    using EdgeUsers = std::map<std::pair<unsigned int, unsigned int>,
+                               std::vector<unsigned int>>;
+
+    /// The triangles of each edge of @p surface; InputError naming the first
+    /// open (or over-shared) edge in the order of the triangles, since the
+    /// orientation walk needs exactly two triangles at every edge.
+    EdgeUsers
+    closed_edges(const SurfaceTriangles &surface, const std::string &where)
     {
       const std::size_t n = surface.triangles.size();
-      // Per undirected edge: the (at most two) triangles using it.
-      std::map<std::pair<unsigned int, unsigned int>, std::vector<unsigned int>>
-        edges;
+      EdgeUsers         edges;
       for (unsigned int t = 0; t < n; ++t)
         for (unsigned int k = 0; k < 3; ++k)
           {
@@ -210,7 +206,6 @@ namespace hyperelastic
                                b = surface.triangles[t][(k + 1) % 3];
             edges[{std::min(a, b), std::max(a, b)}].push_back(t);
           }
-      // The first open (or over-shared) edge in the order of the triangles.
       for (unsigned int t = 0; t < n; ++t)
         for (unsigned int k = 0; k < 3; ++k)
           {
@@ -228,6 +223,21 @@ namespace hyperelastic
                 "the first such edge, of " +
                 triangle_text(surface, t) + ")");
           }
+      return edges;
+    }
+
+    /// Each triangle's connected component (over the shared edges
+    /// @p edges), the triangles of a component turned to agree with its
+    /// first (counted in @p n_turned); InputError if a component cannot be
+    /// oriented.
+    std::vector<unsigned int>
+    connect_and_orient(SurfaceTriangles  &surface,
+                       EdgeUsers         &edges,
+                       const std::string &where,
+                       unsigned int      &n_components,
+                       std::size_t       &n_turned)
+    {
+      const std::size_t n = surface.triangles.size();
       // Neighbours agree when they run along their common edge in
       // opposite directions; a breadth-first walk turns the others.
       const auto direction =
@@ -280,22 +290,19 @@ namespace hyperelastic
             }
           ++n_components;
         }
-      // Each component outward: a positive enclosed volume.
-      std::vector<double> volume(n_components, 0.);
-      for (unsigned int t = 0; t < n; ++t)
-        {
-          const Triangle &v = surface.triangles[t];
-          volume[component[t]] += orient(Point<3>(),
-                                         surface.vertices[v[0]],
-                                         surface.vertices[v[1]],
-                                         surface.vertices[v[2]]);
-        }
-      for (unsigned int t = 0; t < n; ++t)
-        if (volume[component[t]] < 0.)
-          std::swap(surface.triangles[t][1], surface.triangles[t][2]);
+      return component;
+    }
 
-      // Nesting: how many components hold a vertex of each; a component
-      // inside an odd number is a cavity of the innermost of them.
+    /// Nesting: how many components hold a vertex of each; a component
+    /// inside an odd number is a cavity of the innermost of them, turned to
+    /// face into it. @p enclosing[c]: that innermost component, or invalid.
+    void
+    turn_cavities(SurfaceTriangles                &surface,
+                  const std::vector<unsigned int> &component,
+                  const unsigned int               n_components,
+                  std::vector<unsigned int>       &enclosing)
+    {
+      const std::size_t                      n = surface.triangles.size();
       std::vector<std::vector<unsigned int>> triangles_of(n_components);
       for (unsigned int t = 0; t < n; ++t)
         triangles_of[component[t]].push_back(t);
@@ -318,6 +325,38 @@ namespace hyperelastic
             for (const unsigned int t : triangles_of[c])
               std::swap(surface.triangles[t][1], surface.triangles[t][2]);
           }
+    }
+
+    /// Each triangle's connected component (over shared edges), every
+    /// component oriented consistently and outward, except a component
+    /// inside another (a cavity), which faces into its cavity;
+    /// @p enclosing[c]: the component a cavity c lies in (the innermost),
+    /// or invalid for a body.
+    std::vector<unsigned int>
+    orient_components(SurfaceTriangles          &surface,
+                      const std::string         &where,
+                      unsigned int              &n_components,
+                      std::size_t               &n_turned,
+                      std::vector<unsigned int> &enclosing)
+    {
+      const std::size_t         n     = surface.triangles.size();
+      EdgeUsers                 edges = closed_edges(surface, where);
+      std::vector<unsigned int> component =
+        connect_and_orient(surface, edges, where, n_components, n_turned);
+      // Each component outward: a positive enclosed volume.
+      std::vector<double> volume(n_components, 0.);
+      for (unsigned int t = 0; t < n; ++t)
+        {
+          const Triangle &v = surface.triangles[t];
+          volume[component[t]] += orient(Point<3>(),
+                                         surface.vertices[v[0]],
+                                         surface.vertices[v[1]],
+                                         surface.vertices[v[2]]);
+        }
+      for (unsigned int t = 0; t < n; ++t)
+        if (volume[component[t]] < 0.)
+          std::swap(surface.triangles[t][1], surface.triangles[t][2]);
+      turn_cavities(surface, component, n_components, enclosing);
       return component;
     }
 
@@ -487,6 +526,188 @@ namespace hyperelastic
     return result;
   }
 
+  namespace
+  {
+    /// The discrete surface of each (component, group) of a surface.
+    using SurfaceTags = std::map<std::pair<unsigned int, unsigned int>, int>;
+
+    /// Gives gmsh one discrete surface per (component, group) of
+    /// @p oriented, in the order of first appearance, with its nodes and
+    /// triangles; @p loops[c]: the surfaces of component c.
+    void
+    add_discrete_surfaces(const SurfaceTriangles          &oriented,
+                          const std::vector<unsigned int> &component,
+                          SurfaceTags                     &surface_of,
+                          std::vector<std::vector<int>>   &loops)
+    {
+      std::map<int, std::vector<std::size_t>> nodes_of;
+      std::map<int, std::vector<std::size_t>> elements_of;
+      std::vector<int>            node_surface(oriented.vertices.size(), 0);
+      std::map<int, unsigned int> group_of;
+      for (unsigned int t = 0; t < oriented.triangles.size(); ++t)
+        {
+          const auto key = std::make_pair(component[t], oriented.groups[t]);
+          auto       s   = surface_of.find(key);
+          if (s == surface_of.end())
+            {
+              const int tag = gmsh::model::addDiscreteEntity(2);
+              s             = surface_of.emplace(key, tag).first;
+              loops[component[t]].push_back(tag);
+              group_of[tag] = oriented.groups[t];
+            }
+          for (const unsigned int v : oriented.triangles[t])
+            {
+              if (node_surface[v] == 0)
+                node_surface[v] = s->second;
+              elements_of[s->second].push_back(v + 1);
+            }
+        }
+      for (unsigned int v = 0; v < oriented.vertices.size(); ++v)
+        nodes_of[node_surface[v]].push_back(v + 1);
+      for (const auto &[tag, nodes] : nodes_of)
+        {
+          std::vector<double> xyz;
+          for (const std::size_t n : nodes)
+            for (unsigned int d = 0; d < 3; ++d)
+              xyz.push_back(oriented.vertices[n - 1][d]);
+          gmsh::model::mesh::addNodes(2, tag, nodes, xyz);
+        }
+      std::size_t next_element = 1;
+      for (const auto &[tag, corners] : elements_of)
+        {
+          std::vector<std::size_t> numbers(corners.size() / 3);
+          for (std::size_t &n : numbers)
+            n = next_element++;
+          gmsh::model::mesh::addElementsByType(tag, 2, numbers, corners);
+        }
+    }
+
+    /// One gmsh volume per body, bounded by its own surface and those of
+    /// its cavities (@p enclosing as orient_components gives it).
+    std::vector<int>
+    add_volumes(const std::vector<std::vector<int>> &loops,
+                const std::vector<unsigned int>     &enclosing,
+                const unsigned int                   n_components)
+    {
+      std::vector<int> volumes;
+      for (unsigned int c = 0; c < n_components; ++c)
+        if (enclosing[c] == dealii::numbers::invalid_unsigned_int)
+          {
+            std::vector<int> shells{gmsh::model::geo::addSurfaceLoop(loops[c])};
+            for (unsigned int d = 0; d < n_components; ++d)
+              if (enclosing[d] == c)
+                shells.push_back(gmsh::model::geo::addSurfaceLoop(loops[d]));
+            volumes.push_back(gmsh::model::geo::addVolume(shells));
+          }
+      return volumes;
+    }
+
+    /// gmsh's 3D Delaunay mesher on the model, sized @p size.
+    void
+    generate_tetrahedra(const double size)
+    {
+      gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+      gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay
+      // The optimizer on every tetrahedron of gmsh quality below 0.5
+      // (the default, 0.3, left smallest dihedral angles of 14-16
+      // degrees on the tests' spheres and pebble; 0.5 gives 21-23 in the
+      // same time).
+      gmsh::option::setNumber("Mesh.Optimize", 1);
+      gmsh::option::setNumber("Mesh.OptimizeThreshold", 0.5);
+      gmsh::model::mesh::generate(3);
+    }
+
+    /// The vertices of @p mesh: the surface's first, in order (found by
+    /// their coordinates, which gmsh keeps, since it may renumber them),
+    /// then gmsh's inside in the order of their tags; returns the mesh's
+    /// vertex number of each gmsh node tag.
+    std::map<std::size_t, unsigned int>
+    read_gmsh_nodes(const SurfaceTriangles &oriented, GmshMesh<3> &mesh)
+    {
+      std::vector<std::size_t> tags;
+      std::vector<double>      xyz, parametric;
+      gmsh::model::mesh::getNodes(tags, xyz, parametric);
+      std::map<std::array<double, 3>, unsigned int> surface_vertex;
+      for (unsigned int v = 0; v < oriented.vertices.size(); ++v)
+        {
+          const Point<3> &x                    = oriented.vertices[v];
+          surface_vertex[{{x[0], x[1], x[2]}}] = v;
+        }
+      mesh.vertices = oriented.vertices;
+      std::vector<std::pair<std::size_t, std::size_t>> order;
+      for (std::size_t i = 0; i < tags.size(); ++i)
+        order.emplace_back(tags[i], i);
+      std::sort(order.begin(), order.end());
+      std::map<std::size_t, unsigned int> index;
+      for (const auto &[tag, i] : order)
+        {
+          const auto found =
+            surface_vertex.find({{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}});
+          if (found != surface_vertex.end())
+            index[tag] = found->second;
+          else
+            {
+              index[tag] = mesh.vertices.size();
+              mesh.vertices.emplace_back(xyz[3 * i],
+                                         xyz[3 * i + 1],
+                                         xyz[3 * i + 2]);
+            }
+        }
+      return index;
+    }
+
+    /// The tetrahedra of @p volumes (material id 0), then the triangles of
+    /// each discrete surface (boundary id: its group), numbered from 1 in
+    /// that order; @p index: the mesh's vertex of each gmsh node tag.
+    void
+    read_gmsh_elements(const std::vector<int>                    &volumes,
+                       const SurfaceTags                         &surface_of,
+                       const std::map<std::size_t, unsigned int> &index,
+                       GmshMesh<3>                               &mesh)
+    {
+      // The mesh's vertex numbers of element @p e of @p n corners.
+      const auto corner_vertices = [&](const std::vector<std::size_t> &c,
+                                       const std::size_t               e,
+                                       const unsigned int              n) {
+        std::array<unsigned int, 4> v{};
+        for (unsigned int k = 0; k < n; ++k)
+          v[k] = index.at(c[n * e + k]);
+        return v;
+      };
+      long long number = 1;
+      for (const int volume : volumes)
+        {
+          std::vector<std::size_t> elements, corners;
+          gmsh::model::mesh::getElementsByType(4, elements, corners, volume);
+          for (std::size_t e = 0; e < elements.size(); ++e)
+            mesh.add_cell(corner_vertices(corners, e, 4), 0, number++);
+        }
+      for (const auto &[key, tag] : surface_of)
+        {
+          std::vector<std::size_t> elements, corners;
+          gmsh::model::mesh::getElementsByType(2, elements, corners, tag);
+          for (std::size_t e = 0; e < elements.size(); ++e)
+            mesh.add_face(corner_vertices(corners, e, 3), key.second, number++);
+        }
+    }
+
+    /// The bounds of the vertices of @p mesh, in each coordinate.
+    void
+    set_bounds(GmshMesh<3> &mesh)
+    {
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          mesh.lower[d] = std::numeric_limits<double>::infinity();
+          mesh.upper[d] = -std::numeric_limits<double>::infinity();
+          for (const Point<3> &x : mesh.vertices)
+            {
+              mesh.lower[d] = std::min(mesh.lower[d], x[d]);
+              mesh.upper[d] = std::max(mesh.upper[d], x[d]);
+            }
+        }
+    }
+  } // namespace
+
   GmshMesh<3>
   tetrahedralise(const SurfaceTriangles &surface,
                  const double            size,
@@ -507,133 +728,16 @@ namespace hyperelastic
       {
         GmshSession session;
         gmsh::model::add("surface");
-        // One discrete surface per (component, group), in the order of
-        // first appearance.
-        std::map<std::pair<unsigned int, unsigned int>, int> surface_of;
-        std::vector<std::vector<int>>           loops(n_components);
-        std::map<int, std::vector<std::size_t>> nodes_of;
-        std::map<int, std::vector<std::size_t>> elements_of;
-        std::vector<int>            node_surface(oriented.vertices.size(), 0);
-        std::map<int, unsigned int> group_of;
-        for (unsigned int t = 0; t < oriented.triangles.size(); ++t)
-          {
-            const auto key = std::make_pair(component[t], oriented.groups[t]);
-            auto       s   = surface_of.find(key);
-            if (s == surface_of.end())
-              {
-                const int tag = gmsh::model::addDiscreteEntity(2);
-                s             = surface_of.emplace(key, tag).first;
-                loops[component[t]].push_back(tag);
-                group_of[tag] = oriented.groups[t];
-              }
-            for (const unsigned int v : oriented.triangles[t])
-              {
-                if (node_surface[v] == 0)
-                  node_surface[v] = s->second;
-                elements_of[s->second].push_back(v + 1);
-              }
-          }
-        for (unsigned int v = 0; v < oriented.vertices.size(); ++v)
-          nodes_of[node_surface[v]].push_back(v + 1);
-        for (const auto &[tag, nodes] : nodes_of)
-          {
-            std::vector<double> xyz;
-            for (const std::size_t n : nodes)
-              for (unsigned int d = 0; d < 3; ++d)
-                xyz.push_back(oriented.vertices[n - 1][d]);
-            gmsh::model::mesh::addNodes(2, tag, nodes, xyz);
-          }
-        std::size_t next_element = 1;
-        for (const auto &[tag, corners] : elements_of)
-          {
-            std::vector<std::size_t> numbers(corners.size() / 3);
-            for (std::size_t &n : numbers)
-              n = next_element++;
-            gmsh::model::mesh::addElementsByType(tag, 2, numbers, corners);
-          }
-        // One volume per body, bounded by its own surface and those of
-        // its cavities.
-        std::vector<int> volumes;
-        for (unsigned int c = 0; c < n_components; ++c)
-          if (enclosing[c] == dealii::numbers::invalid_unsigned_int)
-            {
-              std::vector<int> shells{
-                gmsh::model::geo::addSurfaceLoop(loops[c])};
-              for (unsigned int d = 0; d < n_components; ++d)
-                if (enclosing[d] == c)
-                  shells.push_back(gmsh::model::geo::addSurfaceLoop(loops[d]));
-              volumes.push_back(gmsh::model::geo::addVolume(shells));
-            }
+        SurfaceTags                   surface_of;
+        std::vector<std::vector<int>> loops(n_components);
+        add_discrete_surfaces(oriented, component, surface_of, loops);
+        const std::vector<int> volumes =
+          add_volumes(loops, enclosing, n_components);
         gmsh::model::geo::synchronize();
-
-        gmsh::option::setNumber("Mesh.MeshSizeMax", size);
-        gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay
-        // The optimizer on every tetrahedron of gmsh quality below 0.5
-        // (the default, 0.3, left smallest dihedral angles of 14-16
-        // degrees on the tests' spheres and pebble; 0.5 gives 21-23 in the
-        // same time).
-        gmsh::option::setNumber("Mesh.Optimize", 1);
-        gmsh::option::setNumber("Mesh.OptimizeThreshold", 0.5);
-        gmsh::model::mesh::generate(3);
-
-        // The nodes: the surface's first, in order (found by their
-        // coordinates, which gmsh keeps, since it may renumber them), then
-        // gmsh's inside in the order of their tags.
-        std::vector<std::size_t> tags;
-        std::vector<double>      xyz, parametric;
-        gmsh::model::mesh::getNodes(tags, xyz, parametric);
-        std::map<std::array<double, 3>, unsigned int> surface_vertex;
-        for (unsigned int v = 0; v < oriented.vertices.size(); ++v)
-          {
-            const Point<3> &x                    = oriented.vertices[v];
-            surface_vertex[{{x[0], x[1], x[2]}}] = v;
-          }
-        mesh.vertices = oriented.vertices;
-        std::vector<std::pair<std::size_t, std::size_t>> order;
-        for (std::size_t i = 0; i < tags.size(); ++i)
-          order.emplace_back(tags[i], i);
-        std::sort(order.begin(), order.end());
-        std::map<std::size_t, unsigned int> index;
-        for (const auto &[tag, i] : order)
-          {
-            const auto found = surface_vertex.find(
-              {{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}});
-            if (found != surface_vertex.end())
-              index[tag] = found->second;
-            else
-              {
-                index[tag] = mesh.vertices.size();
-                mesh.vertices.emplace_back(xyz[3 * i],
-                                           xyz[3 * i + 1],
-                                           xyz[3 * i + 2]);
-              }
-          }
-        // The mesh's vertex numbers of element @p e of @p n corners.
-        const auto corner_vertices = [&](const std::vector<std::size_t> &c,
-                                         const std::size_t               e,
-                                         const unsigned int              n) {
-          std::array<unsigned int, 4> v{};
-          for (unsigned int k = 0; k < n; ++k)
-            v[k] = index.at(c[n * e + k]);
-          return v;
-        };
-        long long number = 1;
-        for (const int volume : volumes)
-          {
-            std::vector<std::size_t> elements, corners;
-            gmsh::model::mesh::getElementsByType(4, elements, corners, volume);
-            for (std::size_t e = 0; e < elements.size(); ++e)
-              mesh.add_cell(corner_vertices(corners, e, 4), 0, number++);
-          }
-        for (const auto &[key, tag] : surface_of)
-          {
-            std::vector<std::size_t> elements, corners;
-            gmsh::model::mesh::getElementsByType(2, elements, corners, tag);
-            for (std::size_t e = 0; e < elements.size(); ++e)
-              mesh.add_face(corner_vertices(corners, e, 3),
-                            key.second,
-                            number++);
-          }
+        generate_tetrahedra(size);
+        const std::map<std::size_t, unsigned int> index =
+          read_gmsh_nodes(oriented, mesh);
+        read_gmsh_elements(volumes, surface_of, index, mesh);
       }
     catch (const std::string &message)
       {
@@ -647,16 +751,7 @@ namespace hyperelastic
       throw InputError(where +
                        ": gmsh could not fill the surface with tetrahedra" +
                        (failure.empty() ? std::string() : ": " + failure));
-    for (unsigned int d = 0; d < 3; ++d)
-      {
-        mesh.lower[d] = std::numeric_limits<double>::infinity();
-        mesh.upper[d] = -std::numeric_limits<double>::infinity();
-        for (const Point<3> &x : mesh.vertices)
-          {
-            mesh.lower[d] = std::min(mesh.lower[d], x[d]);
-            mesh.upper[d] = std::max(mesh.upper[d], x[d]);
-          }
-      }
+    set_bounds(mesh);
     return mesh;
   }
 

@@ -12,6 +12,86 @@ namespace hyperelastic
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// The fields of @p n_cells cells, all zero (the sums start there).
+    CellFields
+    zero_fields(const unsigned int n_cells)
+    {
+      CellFields fields;
+      fields.J.reinit(n_cells);
+      fields.energy_density.reinit(n_cells);
+      fields.von_mises.reinit(n_cells);
+      for (auto &c : fields.cauchy)
+        c.reinit(n_cells);
+      return fields;
+    }
+
+    /// Whether a model of @p material varies with position (then the
+    /// quadrature points are needed).
+    template <int dim>
+    bool
+    any_depends_on_position(const MaterialRegions<dim> &material)
+    {
+      bool any_by_point = false;
+      for (unsigned int r = 0; r < material.n_regions(); ++r)
+        any_by_point = any_by_point || material.model(r).depends_on_position();
+      return any_by_point;
+    }
+
+    /// The splits of each region's model of @p material and of its 3D twin
+    /// in @p material3d, in the order of the regions, for the mixed
+    /// formulation (none without @p mixed).
+    template <int dim>
+    void
+    split_models(
+      const MaterialRegions<dim>                         &material,
+      const MaterialRegions<3>                           &material3d,
+      const bool                                          mixed,
+      std::vector<std::unique_ptr<VolumetricSplit<dim>>> &region_split,
+      std::vector<std::unique_ptr<VolumetricSplit<3>>>   &region_split3d)
+    {
+      for (unsigned int r = 0; mixed && r < material.n_regions(); ++r)
+        {
+          region_split.push_back(material.model(r).volumetric_split());
+          region_split3d.push_back(material3d.model(r).volumetric_split());
+        }
+    }
+
+    /// Plane strain: the 3D F is diag(F, 1).
+    template <int dim>
+    Tensor<2, 3>
+    three_dimensional(const Tensor<2, dim> &F)
+    {
+      Tensor<2, 3> F3 = unit_symmetric_tensor<3>();
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          F3[i][j] = F[i][j];
+      return F3;
+    }
+
+    /// Cell @p index's integrals of J and energy density over its
+    /// @p volume made averages, and its Cauchy stress (the integral
+    /// @p sigma) averaged into the components and the von Mises stress.
+    void
+    finish_cell(CellFields        &fields,
+                const unsigned int index,
+                const double       volume,
+                Tensor<2, 3>       sigma)
+    {
+      fields.J[index] /= volume;
+      fields.energy_density[index] /= volume;
+      sigma /= volume;
+      const unsigned int pairs[6][2] = {
+        {0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+      for (unsigned int c = 0; c < 6; ++c)
+        fields.cauchy[c][index] = sigma[pairs[c][0]][pairs[c][1]];
+      const Tensor<2, 3> dev =
+        sigma - trace(sigma) / 3. * Tensor<2, 3>(unit_symmetric_tensor<3>());
+      fields.von_mises[index] = std::sqrt(1.5 * scalar_product(dev, dev));
+    }
+  } // namespace
+
   template <int dim>
   CellFields
   compute_cell_fields(const DoFHandler<dim>               &dof_handler,
@@ -22,19 +102,12 @@ namespace hyperelastic
   {
     const unsigned int n_cells =
       dof_handler.get_triangulation().n_active_cells();
-    CellFields fields;
-    fields.J.reinit(n_cells);
-    fields.energy_density.reinit(n_cells);
-    fields.von_mises.reinit(n_cells);
-    for (auto &c : fields.cauchy)
-      c.reinit(n_cells);
+    CellFields fields = zero_fields(n_cells);
 
     const QGaussSimplex<dim> quadrature(dof_handler.get_fe().degree);
     // A model whose constants vary with position (fibre directions) is
     // evaluated at each quadrature point, with its 3D twin there.
-    bool any_by_point = false;
-    for (unsigned int r = 0; r < material.n_regions(); ++r)
-      any_by_point = any_by_point || material.model(r).depends_on_position();
+    const bool any_by_point = any_depends_on_position(material);
     FEValues<dim>                    values(mapping,
                          dof_handler.get_fe(),
                          quadrature,
@@ -50,11 +123,7 @@ namespace hyperelastic
     // The splits of each region's model and of its 3D twin.
     std::vector<std::unique_ptr<VolumetricSplit<dim>>> region_split;
     std::vector<std::unique_ptr<VolumetricSplit<3>>>   region_split3d;
-    for (unsigned int r = 0; mixed && r < material.n_regions(); ++r)
-      {
-        region_split.push_back(material.model(r).volumetric_split());
-        region_split3d.push_back(material3d.model(r).volumetric_split());
-      }
+    split_models(material, material3d, mixed, region_split, region_split3d);
     std::unique_ptr<VolumetricSplit<dim>> point_split;
     std::unique_ptr<VolumetricSplit<3>>   point_split3d;
     // The model (and its 3D twin) at a point of a by_point model.
@@ -98,11 +167,7 @@ namespace hyperelastic
               const Material<dim> &model = by_point ? *point_model : cell_model;
               const Material<3>   &model3d =
                 by_point ? *point_model3d : material3d.model(r);
-              // Plane strain: the 3D F is diag(F, 1).
-              Tensor<2, 3> F3 = unit_symmetric_tensor<3>();
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = 0; j < dim; ++j)
-                  F3[i][j] = F[i][j];
+              const Tensor<2, 3> F3 = three_dimensional(F);
               const double J = determinant(F);
               fields.J[index] += J * JxW;
               // Cauchy stress sigma = P F^T / J.
@@ -125,17 +190,7 @@ namespace hyperelastic
                 }
               volume += JxW;
             }
-          fields.J[index] /= volume;
-          fields.energy_density[index] /= volume;
-          sigma /= volume;
-          const unsigned int pairs[6][2] = {
-            {0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
-          for (unsigned int c = 0; c < 6; ++c)
-            fields.cauchy[c][index] = sigma[pairs[c][0]][pairs[c][1]];
-          const Tensor<2, 3> dev =
-            sigma -
-            trace(sigma) / 3. * Tensor<2, 3>(unit_symmetric_tensor<3>());
-          fields.von_mises[index] = std::sqrt(1.5 * scalar_product(dev, dev));
+          finish_cell(fields, index, volume, sigma);
         }
     return fields;
   }
