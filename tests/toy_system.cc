@@ -83,7 +83,7 @@ namespace
     double solution_scale() const override { return scale; }
     void judge_converged_state() override {}
     void set_load_factor(double load_factor) override { t = load_factor; }
-    void store_converged_state() override { saved = {u1, u2}; }
+    void store_converged_state() override { saved = {{u1, u2}}; }
     void restore_converged_state() override { u1 = saved[0], u2 = saved[1]; }
     double directional_derivative() const override { return residual(u1, u2) * du1; }
     // clang-format on
