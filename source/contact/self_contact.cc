@@ -203,6 +203,11 @@ namespace hyperelastic
                 edge_area[it->second] += measure / 3.;
               }
         }
+    std::vector<std::array<double, dim>> points(vertices.size());
+    for (unsigned int k = 0; k < vertices.size(); ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        points[k][d] = vertices[k].X[d];
+    incidence = BoundaryIncidence<dim>(faces, points);
   }
 
   template <int dim>
@@ -298,10 +303,25 @@ namespace hyperelastic
     double                   closest  = d_hat;
     for (const Pair &pair : pairs)
       {
-        const Coordinates          c = coordinates(pair, x);
-        const DistanceCase         k = classify_pair<dim>(c, pair.edge_edge);
-        PairBarrier<n_coordinates> b = pair_barrier<dim>(
-          c, k, d_hat, kappa * pair.weight, pair.mollifier, order);
+        const Coordinates c = coordinates(pair, x);
+        if (pair.weight == 0.)
+          {
+            // A pair kept for the feasible step only (two edges not both
+            // sharp: contact/duplicate_counting.h).
+            const double d = std::sqrt(std::max(
+              squared_distance<dim>(classify_pair<dim>(c, pair.edge_edge), c),
+              0.));
+            closest        = std::min(closest, d);
+            touching       = touching || !(d > 0.);
+            continue;
+          }
+        PairBarrier<n_coordinates> b =
+          pair_barrier<dim>(c,
+                            pair_terms<dim>(c, pair.edge_edge, pair.correction),
+                            d_hat,
+                            kappa * pair.weight,
+                            pair.mollifier,
+                            order);
         closest = std::min(closest, b.distance);
         if (!(b.distance > 0.))
           {
@@ -517,7 +537,7 @@ namespace hyperelastic
   SelfContact<dim>::lag(const State &s) const
   {
     std::vector<Lagged> result;
-    for_each_active(s.x, 0, [&](const Pair &pair, const auto &b) {
+    for_each_active(s.x, 0, [&](const Pair &pair, const auto &) {
       const Coordinates  c = coordinates(pair, s.x);
       const DistanceCase k = classify_pair<dim>(c, pair.edge_edge);
       Lagged             l;
@@ -545,8 +565,12 @@ namespace hyperelastic
             if (cs < pair.mollifier)
               mollifier = (2. - cs / pair.mollifier) * cs / pair.mollifier;
           }
-      l.normal_force = -kappa * pair.weight * mollifier *
-                       barrier(b.distance, d_hat).derivative;
+      // b'(d) of the pair's terms together (the corrections'
+      // closest points move with the main one's over a flat boundary).
+      l.normal_force =
+        -kappa * pair.weight * mollifier *
+        pair_barrier_slope<dim>(
+          c, pair_terms<dim>(c, pair.edge_edge, pair.correction), d_hat);
       result.push_back(l);
     });
     return result;

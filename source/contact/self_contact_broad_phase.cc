@@ -95,7 +95,8 @@ namespace hyperelastic
               pair.v[0] = v;
               for (unsigned int d = 0; d < dim; ++d)
                 pair.v[d + 1] = face[d];
-              pair.weight = vertices[v].area;
+              pair.weight     = vertices[v].area;
+              pair.correction = incidence.point_face(v, f);
               result.push_back(pair);
             }
         }
@@ -126,8 +127,17 @@ namespace hyperelastic
                 Pair pair;
                 pair.v = {{edges[e][0], edges[e][1], edges[o][0], edges[o][1]}};
                 pair.edge_edge = true;
-                pair.weight    = 0.5 * (edge_area[e] + edge_area[o]);
+                // Only two sharp edges carry a barrier
+                // (contact/duplicate_counting.h); the others keep their
+                // place in CCD.
+                const bool sharp = incidence.sharp(edges[e][0], edges[e][1]) &&
+                                   incidence.sharp(edges[o][0], edges[o][1]);
+                pair.weight = sharp ? 0.5 * (edge_area[e] + edge_area[o]) : 0.;
                 pair.mollifier = 1e-3 * edge_length2[e] * edge_length2[o];
+                pair.correction = incidence.edge_edge(edges[e],
+                                                      edges[o],
+                                                      edge_area[e],
+                                                      edge_area[o]);
                 result.push_back(pair);
               }
           }

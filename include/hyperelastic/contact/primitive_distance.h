@@ -370,22 +370,42 @@ namespace hyperelastic
     SmallMatrix<n>        hessian{};
   };
 
-  /// The energy scale * m(x) * b(d(x), d_hat) of a pair at @p x in case
-  /// @p c, d = sqrt(squared_distance); the mollifier m only if
-  /// @p mollifier_eps > 0 (edge-edge: eps_x). With @p order 1 the
-  /// gradient, with 2 the Hessian too (not projected). Zero beyond d_hat;
-  /// +infinity energy if d <= 0.
+  /// The distance cases whose barriers make up a pair's energy, with their
+  /// coefficients: the pair's own case first (coefficient 1), then the
+  /// sub-cases that remove the double counting of the features the pair
+  /// shares with its neighbours (contact/duplicate_counting.h), at most 6.
+  struct PairTerms
+  {
+    std::array<DistanceCase, 7> cases{};
+    std::array<double, 7>       coefficient{};
+    unsigned int                size = 0;
+
+    void
+    add(const DistanceCase &c, const double k)
+    {
+      cases[size] = c, coefficient[size] = k, ++size;
+    }
+  };
+
+  /// The energy scale * m(x) * sum_k c_k b(d_k(x), d_hat) of a pair at @p x
+  /// with the @p terms (cases k, coefficients c_k; d_k = sqrt of the
+  /// case's squared distance, the pair's distance that of the first); the
+  /// mollifier m only if @p mollifier_eps > 0 (edge-edge: eps_x). The
+  /// terms beyond d_hat are left out (b is C2 there). With @p order 1 the
+  /// gradient, with 2 the Hessian too (not projected). Zero if the first
+  /// case is beyond d_hat; +infinity energy if its d <= 0.
   template <int dim, std::size_t n>
   PairBarrier<n>
   pair_barrier(const std::array<double, n> &x,
-               const DistanceCase          &c,
+               const PairTerms             &all_terms,
                const double                 d_hat,
                const double                 scale,
                const double                 mollifier_eps,
                const unsigned int           order)
   {
     PairBarrier<n> result;
-    result.distance = std::sqrt(std::max(squared_distance<dim>(c, x), 0.));
+    result.distance =
+      std::sqrt(std::max(squared_distance<dim>(all_terms.cases[0], x), 0.));
     if (!(result.distance > 0.))
       {
         result.energy = std::numeric_limits<double>::infinity();
@@ -393,13 +413,22 @@ namespace hyperelastic
       }
     if (result.distance >= d_hat)
       return result;
+    PairTerms terms;
+    for (unsigned int k = 0; k < all_terms.size; ++k)
+      if (all_terms.coefficient[k] != 0. &&
+          squared_distance<dim>(all_terms.cases[k], x) < d_hat * d_hat)
+        terms.add(all_terms.cases[k], all_terms.coefficient[k]);
     const auto energy = [&](const auto &y) {
       using T = typename std::decay_t<decltype(y)>::value_type;
       using std::log;
       using std::sqrt;
-      const T d = sqrt(squared_distance<dim>(c, y));
-      const T g = d - d_hat;
-      T       e = -scale * g * g * log(d / d_hat);
+      T e = T(0.);
+      for (unsigned int k = 0; k < terms.size; ++k)
+        {
+          const T d = sqrt(squared_distance<dim>(terms.cases[k], y));
+          const T g = d - d_hat;
+          e -= (scale * terms.coefficient[k]) * g * g * log(d / d_hat);
+        }
       if constexpr (dim == 3)
         if (mollifier_eps > 0.)
           {
@@ -440,6 +469,21 @@ namespace hyperelastic
           result.hessian[i][j] = e.dx(i).dx(j);
       }
     return result;
+  }
+
+  /// The same for the single case @p c (coefficient 1).
+  template <int dim, std::size_t n>
+  PairBarrier<n>
+  pair_barrier(const std::array<double, n> &x,
+               const DistanceCase          &c,
+               const double                 d_hat,
+               const double                 scale,
+               const double                 mollifier_eps,
+               const unsigned int           order)
+  {
+    PairTerms terms;
+    terms.add(c, 1.);
+    return pair_barrier<dim>(x, terms, d_hat, scale, mollifier_eps, order);
   }
 
   /// The closest-point coefficients of case @p c at @p x: one per point of

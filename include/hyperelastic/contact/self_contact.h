@@ -6,6 +6,9 @@
 // without a common vertex; d_k their distance (contact/primitive_distance.h),
 // m_k the edge-edge mollifier (1 for the others), w_k the vertex's share of
 // the boundary measure (edge-edge: the edge's third of its faces' areas).
+// Each pair also carries the corrections of contact/duplicate_counting.h,
+// so that a vertex over a shared boundary vertex or edge is not counted
+// twice: over a flat boundary the barrier is b(gap) wherever the vertex is.
 // Exact gradients and Hessians (automatic differentiation); each pair's
 // Hessian is projected to positive semi-definite when Newton asks for a
 // projected tangent (EnergyTerm::add_stiffness's projection: after the
@@ -48,16 +51,17 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 
+#include <hyperelastic/assembly/energy_term.h>
+#include <hyperelastic/assembly/term_capabilities.h>
 #include <hyperelastic/base/timed_section.h>
 #include <hyperelastic/contact/barrier_settings.h>
 #include <hyperelastic/contact/contact_measures.h>
 #include <hyperelastic/contact/contact_parameters.h>
+#include <hyperelastic/contact/duplicate_counting.h>
 #include <hyperelastic/contact/end_state_map.h>
 #include <hyperelastic/contact/friction_lagging.h>
 #include <hyperelastic/contact/pair_friction.h>
 #include <hyperelastic/contact/primitive_distance.h>
-#include <hyperelastic/assembly/energy_term.h>
-#include <hyperelastic/assembly/term_capabilities.h>
 #include <hyperelastic/materials/material.h>
 
 #include <array>
@@ -231,6 +235,9 @@ namespace hyperelastic
       bool                               edge_edge = false;
       double                             weight    = 0.; ///< w
       double mollifier = 0.; ///< eps_x (edge-edge), 0 otherwise
+      /// The corrections that remove double counting
+      /// (contact/duplicate_counting.h).
+      PairCorrection correction{};
     };
 
     /// The closest pair of the reference configuration among the
@@ -377,6 +384,8 @@ namespace hyperelastic
     /// face's area) and squared rest lengths.
     std::vector<std::array<unsigned int, 2>> edges;
     std::vector<double>                      edge_area, edge_length2;
+    /// The faces at each boundary vertex and edge (the pairs' corrections).
+    BoundaryIncidence<dim> incidence;
     /// The owned boundary vertices: [first_owned, first_owned + n_owned)
     /// (the vertices are numbered rank by rank).
     unsigned int first_owned = 0, n_owned = 0;
