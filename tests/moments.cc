@@ -11,18 +11,24 @@
 //               (X + u - p) x f, computed here from the converged nodal
 //               forces with deal.II's support points (1e-10 of |M|), and
 //               the two ends' moments are equal and opposite (1e-10).
-//   turned_disk 2 MESH  the annulus 1 <= r <= 2 (meshes/annulus_2d_16.msh)
-//               held by its inner circle (id 1), which is widened by 2 %
-//               in the first half of the load, pressing the disk's top onto
-//               a straight plate (a meshed obstacle, mu = 0.5) whose Point
-//               is the disk's centre; in the second half the plate turns by
+//   turned_disk 2 MESH  the disk of radius 2 with a hole of radius 0.25 at
+//               its centre (meshes/disk_with_hole_2d.msh), held by the hole
+//               (id 1), which moves up by 0.02 in the first half of the
+//               load, pressing the disk's top onto a straight plate (a
+//               meshed obstacle, mu = 0.5) whose Point is the disk's centre
+//               (0, 0.02) by then; in the second half the plate turns by
 //               0.02 rad about that centre, its friction turning the disk.
 //               The plate's contact_moment_1_z about the centre equals
 //               minus reaction_moment_1_z about the centre ('Output/Moment
-//               point' = 0, 0) to 1e-8 of its size, and so do the forces
+//               point' = 0, 0.02) to 1e-9 of its size, and so do the forces
 //               (contact_force_1 = -reaction_1); the moment is not trivial:
 //               at least a tenth of mu times the plate's force times the
 //               radius 2.
+//   wedge 2 MESH  the same disk moved up by 0.01 onto the tip of a fixed
+//               frictionless wedge at x = 0.3 (its Point the origin, the
+//               moment point too): only the wedge's corner pair
+//               (MeshObstaclePairs) touches; the same balance, and the
+//               moment is that of the total force at the tip (1e-9).
 // Usage: mpirun -np N moments CASE DIM [DEGREE | MESH]
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -213,14 +219,15 @@ namespace
     return path;
   }
 
-  /// The disk of the 2D cases: the annulus @p mesh, neo-Hookean (E = 1,
-  /// nu = 0.3), its inner circle (id 1) moved by @p hole (x; y
-  /// expressions), 'Output/Moment point' at its centre, tight tolerances,
-  /// and @p contact as the Contact section's body.
+  /// The disk of the 2D cases (@p mesh), neo-Hookean (E = 1, nu = 0.3),
+  /// its hole (id 1) moved by @p hole (x; y expressions), 'Output/Moment
+  /// point' @p point, tight tolerances, and @p contact as the Contact
+  /// section's body.
   std::string
   disk_scene(const std::string &mesh,
              const std::string &steps,
              const std::string &hole,
+             const std::string &point,
              const std::string &contact)
   {
     return subsection("Problem", entry("Dimension", "2")) +
@@ -233,7 +240,7 @@ namespace
            dirichlet(1, 1, "x, y", hole) + tight_solver("direct") +
            subsection("Output",
                       entry("Write VTU", "false") + entry("Verbose", "false") +
-                        entry("Moment point", "0, 0")) +
+                        entry("Moment point", point)) +
            subsection("Contact", contact);
   }
 
@@ -276,7 +283,11 @@ namespace
   turned_disk(Checker &checker, const std::string &mesh)
   {
     const std::string tag   = "disk turned by a plate: ";
-    const double      d_hat = 1e-3, mu = 0.5, top = 2. + 0.5 * d_hat;
+    const double      d_hat = 1e-3, mu = 0.5, lift = 0.02;
+    // The plate at y = 2 + d_hat / 2 in the scene, its file's coordinates
+    // relative to its Point, the disk's centre once lifted.
+    const double      top    = 2. + 0.5 * d_hat - lift;
+    const std::string centre = "0, " + number(lift);
     const std::string contact =
       entry("Barrier distance", number(d_hat)) +
       entry("Meshed obstacle corners", "false") +
@@ -285,14 +296,15 @@ namespace
                    entry("File",
                          polyline_file("turning_plate_2d",
                                        {{{{-3., top}}, {{3., top}}}})) +
-                   entry("Point", "0, 0") + entry("Rotation axis", "0, 0, 1") +
+                   entry("Point", centre) + entry("Rotation axis", "0, 0, 1") +
                    entry("Rotation angle", "t < 0.5 ? 0 : 0.02*(2*t - 1)") +
                    entry("Friction coefficient", number(mu)));
-    const auto problem = run_scene<2>(
-      disk_scene(mesh,
-                 "10",
-                 "0.02*(t < 0.5 ? 2*t : 1)*x; 0.02*(t < 0.5 ? 2*t : 1)*y",
-                 contact));
+    const auto problem =
+      run_scene<2>(disk_scene(mesh,
+                              "10",
+                              "0; " + number(lift) + "*(t < 0.5 ? 2*t : 1)",
+                              centre,
+                              contact));
     const double force = check_balance(checker, *problem, tag);
     checker.at_least(tag + "|contact_moment_1_z| / (mu |contact_force_1| 2) "
                            "(the friction turns the disk)",
@@ -303,7 +315,7 @@ namespace
   }
 
   /// The disk pushed up by 0.01 onto the tip of a fixed frictionless wedge
-  /// (its Point the disk's centre) at x = 0.3, between two of the disk's
+  /// (its Point the origin) at x = 0.3, between two of the disk's
   /// boundary vertices: only the wedge's corner pair (MeshObstaclePairs)
   /// touches, its force on the face's two vertices.
   void
@@ -326,7 +338,7 @@ namespace
                                          {{x + 0.5, y + 0.5}}}})) +
                    entry("Point", "0, 0"));
     const auto problem =
-      run_scene<2>(disk_scene(mesh, "5", "0; 0.01*t", contact));
+      run_scene<2>(disk_scene(mesh, "5", "0; 0.01*t", "0, 0", contact));
     const auto  &last  = problem->summaries().back();
     const double force = check_balance(checker, *problem, tag);
     checker.above(tag + "|contact_force_1|", force, 1e-4);
@@ -356,7 +368,7 @@ main(int argc, char **argv)
     argv,
     "twist",
     [&](const std::string &which, Checker &checker) {
-      const std::string mesh = argc > 3 ? argv[3] : "annulus_2d_16.msh";
+      const std::string mesh = argc > 3 ? argv[3] : "disk_with_hole_2d.msh";
       if (which == "turned_disk")
         turned_disk(checker, mesh);
       else if (which == "wedge")
