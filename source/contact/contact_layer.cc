@@ -71,9 +71,9 @@ namespace hyperelastic
           }
       }
 
-      /// contact_force_<k>_<axis> of each obstacle, contact_moment_<k>_<axis>
-      /// of each obstacle, then the smallest
-      /// distance and the active pairs of obstacles and self contact.
+      /// contact_force_<k>_<axis> of each obstacle, then their
+      /// contact_moment_<k>_<axis>, then the smallest distance and the
+      /// active pairs of obstacles and self contact.
       void
       add_columns(const ReportedState &state, StepSummary<dim> &s) override
       {

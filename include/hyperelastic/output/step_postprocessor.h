@@ -1,8 +1,8 @@
 // What a converged step measures for its summary: the force each support
 // exerts on the body (per Dirichlet boundary id) and its moment about
-// 'Output/Moment point', the bounding box of the
-// deformed vertices, the displacement at the points of 'Output/Points' and
-// the range of the pressure unknowns. Set up once per mesh.
+// 'Output/Moment point', the bounding box of the deformed vertices, the
+// displacement at the points of 'Output/Points' and the range of the
+// pressure unknowns. Set up once per mesh.
 #pragma once
 
 #include <deal.II/base/index_set.h>
