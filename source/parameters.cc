@@ -45,7 +45,7 @@ namespace hyperelastic
     newton.parse(prm);
     load_stepping.parse(prm);
     linear_solver.parse(prm);
-    output.parse(prm);
+    output.parse(prm, problem.dimension);
     time_integration.parse(prm);
     contact.parse(prm, scene_folder);
 

@@ -134,6 +134,13 @@ namespace hyperelastic
   }
 
   template <int dim>
+  const VectorType &
+  Problem<dim>::residual_forces() const
+  {
+    return system->residual_forces();
+  }
+
+  template <int dim>
   StepSummary<dim>
   Problem<dim>::summarize(const LoadStep &step, const NewtonResult &result)
   {
@@ -306,4 +313,8 @@ namespace hyperelastic
   Problem<2>::solution() const;
   template const VectorType &
   Problem<3>::solution() const;
+  template const VectorType &
+  Problem<2>::residual_forces() const;
+  template const VectorType &
+  Problem<3>::residual_forces() const;
 } // namespace hyperelastic

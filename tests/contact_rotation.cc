@@ -20,7 +20,9 @@
 //               pressed onto its top, then turned by 3 degrees about the
 //               vertical axis (quasi-static): the top vertices turn with
 //               it, off the plate's rotation by less than the slip the
-//               smoothing allows (eps per load step of the turn).
+//               smoothing allows (eps per load step of the turn); the
+//               plate's contact_moment about its point balances the
+//               clamp's reaction_moment about the same point (1e-6).
 // Usage: mpirun -np N contact_rotation CASE DIM
 #include <deal.II/base/mpi.h>
 
@@ -539,6 +541,7 @@ namespace
            dirichlet(1, 4, "x, y, z", "0; 0; 0") +
            subsection("Output",
                       entry("Write VTU", "false") + entry("Verbose", "false") +
+                        entry("Moment point", "0, 0, 0.451") +
                         entry("Points",
                               "0.5, 0.5, 0.5; -0.5, 0.5, 0.5; -0.5, -0.5, "
                               "0.5; 0.5, -0.5, 0.5; 0.5, 0, 0.5; 0, 0.5, 0.5; "
@@ -606,6 +609,25 @@ namespace
     checker.above("rotating plate: smallest contact_min_distance",
                   smallest(s, "contact_min_distance"),
                   0.);
+    // The plate's moment about its point (0, 0, 0.451 once pressed, the
+    // Moment point) balances the clamp's: the friction's torque and the
+    // normal forces' moments.
+    double plate_size = 0., balance = 0.;
+    for (const char *a : {"x", "y", "z"})
+      {
+        const double m = column(turned, std::string("contact_moment_1_") + a);
+        plate_size += m * m;
+        balance +=
+          std::pow(m + column(turned, std::string("reaction_moment_4_") + a),
+                   2);
+      }
+    checker.above("rotating plate: |contact_moment_1_z| (the torque)",
+                  std::abs(column(turned, "contact_moment_1_z")),
+                  1e-4);
+    checker.at_most("rotating plate: |contact_moment_1 + reaction_moment_4| "
+                    "/ |contact_moment_1|",
+                    std::sqrt(balance / plate_size),
+                    1e-6);
   }
 } // namespace
 

@@ -6,13 +6,18 @@
 // largest magnitude in the column, or for a vector component (reaction_1_x,
 // point2_uy, momentum_z, ...) in all components of that vector, and at least
 // 1e-3 (quantities of round-off size around zero are compared absolutely to
-// 1e-9). The header must be the same,
+// 1e-9). A moment (reaction_moment_<id>_*, contact_moment_<k>_*) is held to
+// at least its force's scale (reaction_<id>_*, contact_force_<k>_*) times
+// the size of the deformed body (the largest extent of its bounding box):
+// where the forces' moments cancel (a body squeezed between plates), the
+// force's round-off is its scale. The header must be the same,
 // column by column, and so must the number of rows. Columns that count solver
 // work (linear and line-search iterations, the final residual, AMG set-ups)
 // are not held:
 // they follow round-off, the answer does not.
 //
-// Usage: mpirun -np N example_scenes SCENE.prm REFERENCE.csv [SECTION/ENTRY=VALUE ...]
+// Usage: mpirun -np N example_scenes SCENE.prm REFERENCE.csv
+// [SECTION/ENTRY=VALUE ...]
 //        with HYPERELASTIC_WRITE_REFERENCE=1 the reference is (re)written
 //        instead of compared.
 #include <deal.II/base/mpi.h>
@@ -33,6 +38,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace hyperelastic;
@@ -194,6 +200,31 @@ main(int argc, char **argv)
             double &scale = scales[vector_of(stored.header[c])];
             scale         = std::max(scale, std::abs(row[c]));
           }
+      // A moment's scale is at least its force's times the body's size.
+      double size = 0.;
+      for (const char axis : {'x', 'y', 'z'})
+        {
+          const auto low  = std::find(stored.header.begin(),
+                                     stored.header.end(),
+                                     std::string("deformed_min_") + axis),
+                     high = std::find(stored.header.begin(),
+                                      stored.header.end(),
+                                      std::string("deformed_max_") + axis);
+          if (low != stored.header.end() && high != stored.header.end())
+            for (const auto &row : stored.rows)
+              size = std::max(size,
+                              row[high - stored.header.begin()] -
+                                row[low - stored.header.begin()]);
+        }
+      for (const auto &[moment, force] :
+           {std::pair<std::string, std::string>("reaction_moment_",
+                                                "reaction_"),
+            std::pair<std::string, std::string>("contact_moment_",
+                                                "contact_force_")})
+        for (auto &[name, scale] : scales)
+          if (name.rfind(moment, 0) == 0)
+            scale = std::max(scale,
+                             scales[force + name.substr(moment.size())] * size);
       for (unsigned int c = 0; c < stored.header.size(); ++c)
         {
           if (solver_work.count(stored.header[c]))

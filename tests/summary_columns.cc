@@ -1,5 +1,6 @@
 // The one place the CSV column list is asserted: StepSummary::columns() with
-// every optional group present (reactions on two boundary ids, two output
+// every optional group present (reactions and their moments on two boundary
+// ids, two output
 // points, the AMG set-up count, the pressure range, dynamics, a column added
 // by a feature), in 2D
 // and 3D, names in order and each value where its name says.
@@ -30,6 +31,8 @@ namespace
     for (unsigned int d = 0; d < dim; ++d)
       force[d] = 10. + d;
     s.reactions = {{0, force}, {5, -force}};
+    s.reaction_moments = {{0, dealii::Tensor<1, 3>({7., 8., 9.})},
+                          {5, dealii::Tensor<1, 3>({-7., -8., -9.})}};
     for (unsigned int d = 0; d < dim; ++d)
       {
         s.deformed_min[d] = -1. - d;
@@ -68,6 +71,17 @@ namespace
     };
     checker.close(tag + "step", value("step"), 3., 1., 1e-15);
     checker.close(tag + "reaction_5_y", value("reaction_5_y"), -11., 1., 1e-15);
+    checker.close(tag + "reaction_moment_5_z",
+                  value("reaction_moment_5_z"),
+                  -9.,
+                  1.,
+                  1e-15);
+    if (dim == 3)
+      checker.close(tag + "reaction_moment_0_x",
+                    value("reaction_moment_0_x"),
+                    7.,
+                    1.,
+                    1e-15);
     checker.close(
       tag + "deformed_max_y", value("deformed_max_y"), 2., 1., 1e-15);
     checker.close(tag + "amg_setups", value("amg_setups"), 7., 1., 1e-15);
@@ -98,6 +112,8 @@ main(int argc, char **argv)
     for (const std::string r : {"reaction_0_", "reaction_5_"})
       for (const std::string a : {"x", "y"})
         names2.push_back(r + a);
+    for (const std::string r : {"reaction_moment_0_", "reaction_moment_5_"})
+      names2.push_back(r + "z");
     for (const std::string a : {"x", "y"})
       {
         names2.push_back("deformed_min_" + a);
@@ -125,6 +141,9 @@ main(int argc, char **argv)
 
     std::vector<std::string> names3 = head;
     for (const std::string r : {"reaction_0_", "reaction_5_"})
+      for (const std::string a : {"x", "y", "z"})
+        names3.push_back(r + a);
+    for (const std::string r : {"reaction_moment_0_", "reaction_moment_5_"})
       for (const std::string a : {"x", "y", "z"})
         names3.push_back(r + a);
     for (const std::string a : {"x", "y", "z"})

@@ -153,6 +153,11 @@ namespace hyperelastic
     const VectorType &
     solution() const;
 
+    /// f_int - f_ext at solution() (owned entries): on the Dirichlet dofs
+    /// the nodal forces of the supports (the reaction columns' terms).
+    const VectorType &
+    residual_forces() const;
+
     /// Builds the model (the mesh, the unknowns, the materials and the
     /// operator) and what a run drives it with: the "mesh and setup"
     /// phase. run() calls it; a benchmark of the set-up alone calls it

@@ -71,8 +71,9 @@ namespace hyperelastic
           }
       }
 
-      /// contact_force_<k>_<axis> of each obstacle, then the smallest
-      /// distance and the active pairs of obstacles and self contact.
+      /// contact_force_<k>_<axis> of each obstacle, then their
+      /// contact_moment_<k>_<axis>, then the smallest distance and the
+      /// active pairs of obstacles and self contact.
       void
       add_columns(const ReportedState &state, StepSummary<dim> &s) override
       {
@@ -82,10 +83,13 @@ namespace hyperelastic
         if (corners)
           {
             const ContactMeasures m = corners->measure(state.u, state.t);
-            for (const SummaryColumn &c : m.forces)
-              for (SummaryColumn &total : all.forces)
-                if (total.name == c.name)
-                  total.value += c.value;
+            for (const auto &[mine, totals] :
+                 {std::pair(&m.forces, &all.forces),
+                  std::pair(&m.moments, &all.moments)})
+              for (const SummaryColumn &c : *mine)
+                for (SummaryColumn &total : *totals)
+                  if (total.name == c.name)
+                    total.value += c.value;
             all.min_distance = std::min(all.min_distance, m.min_distance);
             all.active_pairs += m.active_pairs;
           }
@@ -96,6 +100,7 @@ namespace hyperelastic
             all.active_pairs += m.active_pairs;
           }
         s.more.insert(s.more.end(), all.forces.begin(), all.forces.end());
+        s.more.insert(s.more.end(), all.moments.begin(), all.moments.end());
         s.more.push_back({"contact_min_distance", all.min_distance});
         s.more.push_back({"contact_active_pairs", all.active_pairs});
       }

@@ -100,6 +100,7 @@ namespace hyperelastic
         motions[m]->set_time(0.);
         for (unsigned int d = 0; d < dim; ++d)
           shift[d] = o.point[d] + motions[m]->value(Point<dim>(), d);
+        anchors.push_back(Point<dim>() + shift);
         const unsigned int first = obstacle_points.size();
         for (const Point<dim> &p : surface.points())
           {
@@ -731,8 +732,17 @@ namespace hyperelastic
   MeshObstaclePairs<dim>::measure(const VectorType &u, const double t) const
   {
     std::vector<Tensor<1, dim>> force(numbers.size());
+    std::vector<Tensor<1, 3>>   moment(numbers.size());
     unsigned int                active  = 0;
     double                      closest = d_hat;
+    // Moments about each obstacle's point where it stands, the forces on
+    // the body at its deformed vertices (the pair's energy depends on
+    // distances only: minus the moment of its forces on the obstacle's
+    // vertices).
+    const std::vector<Point<dim>> x = body_at(u);
+    std::vector<Point<dim>>       centre;
+    for (unsigned int k = 0; k < numbers.size(); ++k)
+      centre.push_back(placement(k, clock.obstacle_time(t))(anchors[k]));
     for_each_active(
       u,
       t,
@@ -744,23 +754,23 @@ namespace hyperelastic
         const auto body = body_points(pair);
         for (unsigned int i = 0; i < n_points; ++i)
           if (body[i] >= 0 && vertices[body[i]].owned)
-            for (unsigned int d = 0; d < dim; ++d)
-              force[m][d] -= b.gradient[i * dim + d];
+            {
+              Tensor<1, dim> f;
+              for (unsigned int d = 0; d < dim; ++d)
+                f[d] = -b.gradient[i * dim + d];
+              force[m] += f;
+              moment[m] += moment_of<dim>(x[body[i]] - centre[m], f);
+            }
       },
       &closest);
-    ContactMeasures m;
-    const char      axes[3] = {'x', 'y', 'z'};
+    ContactMeasures measures;
     for (unsigned int k = 0; k < numbers.size(); ++k)
-      {
-        const Tensor<1, dim> total = Utilities::MPI::sum(force[k], comm);
-        for (unsigned int d = 0; d < dim; ++d)
-          m.forces.push_back(
-            {"contact_force_" + std::to_string(numbers[k]) + "_" + axes[d],
-             total[d]});
-      }
-    m.min_distance = Utilities::MPI::min(closest, comm);
-    m.active_pairs = Utilities::MPI::sum(active, comm);
-    return m;
+      measures.add_obstacle<dim>(numbers[k],
+                                 Utilities::MPI::sum(force[k], comm),
+                                 Utilities::MPI::sum(moment[k], comm));
+    measures.min_distance = Utilities::MPI::min(closest, comm);
+    measures.active_pairs = Utilities::MPI::sum(active, comm);
+    return measures;
   }
 
   template class MeshObstaclePairs<2>;

@@ -853,27 +853,27 @@ namespace hyperelastic
   ObstacleContact<dim>::measure(const VectorType &u, const double t) const
   {
     ContactMeasures             m;
-    const char                  axes[3] = {'x', 'y', 'z'};
     std::vector<Tensor<1, dim>> force(obstacles.size());
+    std::vector<Tensor<1, 3>>   moment(obstacles.size());
+    // Moments about each obstacle's point where it stands (Point moved by
+    // its Motion: the centre of its rotation), the forces at the vertices.
+    const std::vector<Placed> where = placed(clock.obstacle_time(t));
     double       min_distance = std::numeric_limits<double>::infinity();
     unsigned int active       = 0;
-    for_each_pair(u,
-                  t,
-                  false,
-                  [&](unsigned int, const unsigned int k, const PairState &p) {
-                    min_distance = std::min(min_distance, p.distance);
-                    active += p.active ? 1 : 0;
-                    force[k] += p.force;
-                  });
+    for_each_pair(
+      u,
+      t,
+      false,
+      [&](const unsigned int a, const unsigned int k, const PairState &p) {
+        min_distance = std::min(min_distance, p.distance);
+        active += p.active ? 1 : 0;
+        force[k] += p.force;
+        moment[k] += moment_of<dim>(position(a, u) - where[k].point, p.force);
+      });
     for (unsigned int k = 0; k < obstacles.size(); ++k)
-      {
-        const Tensor<1, dim> total = Utilities::MPI::sum(force[k], comm);
-        for (unsigned int d = 0; d < dim; ++d)
-          m.forces.push_back({"contact_force_" +
-                                std::to_string(obstacles[k].number) + "_" +
-                                axes[d],
-                              total[d]});
-      }
+      m.add_obstacle<dim>(obstacles[k].number,
+                          Utilities::MPI::sum(force[k], comm),
+                          Utilities::MPI::sum(moment[k], comm));
     m.min_distance = Utilities::MPI::min(min_distance, comm);
     m.active_pairs = static_cast<double>(Utilities::MPI::sum(active, comm));
     return m;

@@ -93,11 +93,24 @@ namespace hyperelastic
       "given. A point on a vertex, edge or face shared by several cells gets "
       "their average. A point outside the mesh is an input error. Empty: no "
       "points.");
+    prm.declare_entry(
+      "Moment point",
+      "0, 0, 0",
+      Anything(),
+      "The point p about which the CSV columns reaction_moment_<id>_x, _y, "
+      "_z (2D: reaction_moment_<id>_z only) give the moment of each "
+      "Dirichlet boundary id's support forces: the sum over that "
+      "boundary's nodes (with P2 every node, edge midpoints too) of "
+      "(X + u - p) x f, the nodal forces f of the reaction_<id> columns "
+      "taken at the nodes' deformed positions X + u. 'x, y, z' in 3D, "
+      "'x, y' in 2D (the default is the origin in both). Obstacles' "
+      "contact_moment_<k> columns are taken about each obstacle's own "
+      "point instead (Contact/Obstacle k/Point moved by its Motion).");
     prm.leave_subsection();
   }
 
   void
-  OutputParameters::parse(ParameterHandler &prm)
+  OutputParameters::parse(ParameterHandler &prm, const unsigned int dim)
   {
     prm.enter_subsection("Output");
     directory = dealii::Utilities::trim(prm.get("Directory"));
@@ -127,6 +140,15 @@ namespace hyperelastic
                    "'");
         points.push_back(coordinates);
       }
+    const std::string moment_text =
+      list_for_dimension(prm.get("Moment point"), "0, 0, 0", dim, ',');
+    moment_point = parse_coordinates(moment_text);
+    if (moment_point.size() != dim)
+      reject("Output/Moment point",
+             prm.get("Moment point"),
+             "needs " + std::to_string(dim) + " numbers (" +
+               (dim == 2 ? "'x, y'" : "'x, y, z'") + ") in a " +
+               std::to_string(dim) + "D scene");
     prm.leave_subsection();
   }
 } // namespace hyperelastic

@@ -1,5 +1,5 @@
-// Reactions, deformed bounding box, point displacements and pressure range of
-// a converged step.
+// Reactions and their moments, deformed bounding box, point displacements and
+// pressure range of a converged step.
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/output/step_postprocessor.h>
@@ -51,6 +51,7 @@ namespace hyperelastic
     const FiniteElement<dim> &fe    = dof_handler.get_fe();
     const IndexSet           &owned = dof_handler.locally_owned_dofs();
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial() && cell->at_boundary())
         for (const unsigned int f : cell->face_indices())
@@ -58,21 +59,46 @@ namespace hyperelastic
             for (unsigned int r = 0; r < reaction_ids.size(); ++r)
               if (cell->face(f)->boundary_id() == reaction_ids[r])
                 {
+                  // The face's dofs looked up among the cell's, whose
+                  // numbering gives each its support point and its node's
+                  // other components whatever the face's orientation.
                   cell->face(f)->get_dof_indices(face_dofs);
-                  for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                  cell->get_dof_indices(cell_dofs);
+                  for (unsigned int i = 0; i < cell_dofs.size(); ++i)
                     {
-                      const unsigned int c =
-                        fe.face_system_to_component_index(i, f).first;
-                      if (c < dim && owned.is_element(face_dofs[i]) &&
-                          prescribed[r][c])
-                        reaction_dofs[r].emplace_back(face_dofs[i], c);
+                      const auto [c, j] = fe.system_to_component_index(i);
+                      if (c >= dim || !prescribed[r][c] ||
+                          !owned.is_element(cell_dofs[i]) ||
+                          std::find(face_dofs.begin(),
+                                    face_dofs.end(),
+                                    cell_dofs[i]) == face_dofs.end())
+                        continue;
+                      ReactionDof d{cell_dofs[i],
+                                    c,
+                                    mapping.transform_unit_to_real_cell(
+                                      cell, fe.unit_support_point(i)),
+                                    {}};
+                      for (unsigned int e = 0; e < dim; ++e)
+                        d.node[e] =
+                          cell_dofs[fe.component_to_system_index(e, j)];
+                      reaction_dofs[r].push_back(d);
                     }
                 }
     for (auto &dofs : reaction_dofs)
       {
-        std::sort(dofs.begin(), dofs.end());
-        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+        const auto by_dof = [](const ReactionDof &a, const ReactionDof &b) {
+          return a.dof < b.dof;
+        };
+        std::sort(dofs.begin(), dofs.end(), by_dof);
+        dofs.erase(std::unique(dofs.begin(),
+                               dofs.end(),
+                               [](const ReactionDof &a, const ReactionDof &b) {
+                                 return a.dof == b.dof;
+                               }),
+                   dofs.end());
       }
+    for (unsigned int d = 0; d < dim; ++d)
+      moment_point[d] = output.moment_point[d];
   }
 
   template <int dim>
@@ -87,13 +113,25 @@ namespace hyperelastic
     const MPI_Comm comm = dof_handler.get_communicator();
     // residual = f_int - f_ext at the converged state: on supported dofs it
     // is the force the support exerts on the body.
+    // Their moments about the moment point p: each nodal force at its
+    // node's deformed position, (X + u - p) x f (in 2D the z component).
     for (unsigned int r = 0; r < reaction_ids.size(); ++r)
       {
         Tensor<1, dim> force;
-        for (const auto &[dof, component] : reaction_dofs[r])
-          force[component] += residual(dof);
+        Tensor<1, 3>   moment;
+        for (const ReactionDof &d : reaction_dofs[r])
+          {
+            Tensor<1, dim> nodal_force, arm = d.X - moment_point;
+            nodal_force[d.component] = residual(d.dof);
+            for (unsigned int e = 0; e < dim; ++e)
+              arm[e] += u(d.node[e]);
+            force += nodal_force;
+            moment += moment_of(arm, nodal_force);
+          }
         s.reactions.emplace_back(reaction_ids[r],
                                  Utilities::MPI::sum(force, comm));
+        s.reaction_moments.emplace_back(reaction_ids[r],
+                                        Utilities::MPI::sum(moment, comm));
       }
 
     // Bounding box of the deformed vertices.

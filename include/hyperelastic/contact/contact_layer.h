@@ -2,8 +2,9 @@
 // 'Contact' section, the contact energy terms (obstacles, the boundary with
 // itself) added to the operator, and one reporter for all that contact adds
 // to a run: the header's lines, the summary's columns
-// (contact_force_<k>_<axis>, contact_min_distance, contact_active_pairs), the
-// frames' contact_force field and self contact's cost. The Model calls
+// (contact_force_<k>_<axis>, contact_moment_<k>_<axis>, contact_min_distance,
+// contact_active_pairs), the frames' contact_force field and self contact's
+// cost. The Model calls
 // add_contact_terms() each time it builds its operator; nothing else holds a
 // contact type.
 #pragma once

@@ -5,6 +5,7 @@
 #include <hyperelastic/output/step_summary.h>
 
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace hyperelastic
@@ -14,10 +15,33 @@ namespace hyperelastic
     /// The force each obstacle exerts on the body, as columns
     /// contact_force_<k>_<axis> (obstacles only).
     std::vector<SummaryColumn> forces;
+    /// The moment each obstacle exerts on the body about the obstacle's
+    /// point (Point moved by its Motion), the forces taken at the body's
+    /// deformed nodes: sum of (x - c) x f, as columns
+    /// contact_moment_<k>_<axis> (2D: z only). By action and reaction it
+    /// is minus the moment the body exerts on the obstacle about c
+    /// (friction's forces act at the body's nodes, within d_hat of the
+    /// obstacle).
+    std::vector<SummaryColumn> moments;
     /// The smallest distance of a vertex (pair) to what it may touch
     /// (self contact: capped at d_hat).
     double min_distance = std::numeric_limits<double>::infinity();
     /// The number of pairs closer than d_hat.
     double active_pairs = 0.;
+
+    /// Appends obstacle @p number's force and moment columns.
+    template <int dim>
+    void
+    add_obstacle(const unsigned int            number,
+                 const dealii::Tensor<1, dim> &force,
+                 const dealii::Tensor<1, 3>   &moment)
+    {
+      const char        axes[3] = {'x', 'y', 'z'};
+      const std::string k       = std::to_string(number);
+      for (unsigned int d = 0; d < dim; ++d)
+        forces.push_back({"contact_force_" + k + "_" + axes[d], force[d]});
+      for (unsigned int d = (dim == 3 ? 0 : 2); d < 3; ++d)
+        moments.push_back({"contact_moment_" + k + "_" + axes[d], moment[d]});
+    }
   };
 } // namespace hyperelastic

@@ -147,7 +147,8 @@ namespace hyperelastic
     advance(double alpha, double t) override;
 
     /// The force of each meshed obstacle's pairs on the body (columns
-    /// contact_force_<k>_<axis>, to be added to ObstacleContact's), the
+    /// contact_force_<k>_<axis>, to be added to ObstacleContact's) and its
+    /// moment about the obstacle's point (contact_moment_<k>_<axis>), the
     /// smallest pair distance (capped at d_hat) and the active pairs at
     /// @p u (ghosted). Collective.
     ContactMeasures
@@ -302,8 +303,11 @@ namespace hyperelastic
     unsigned int       my_subdomain = 0;
     double             d_hat = 0., kappa = 0.;
 
-    /// The meshed obstacles: their section number k and motion.
+    /// The meshed obstacles: their section number k and motion, and where
+    /// their Point is at t = 0 (Point moved by the motion at t = 0: the
+    /// reference of their moments).
     std::vector<unsigned int>                           numbers;
+    std::vector<dealii::Point<dim>>                     anchors;
     std::vector<std::string>                            sections;
     std::vector<std::unique_ptr<dealii::Function<dim>>> motions;
     /// Every meshed obstacle's vertices where they are at t = 0, and which

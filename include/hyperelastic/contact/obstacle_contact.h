@@ -166,7 +166,8 @@ namespace hyperelastic
       const dealii::AffineConstraints<double> &constraints) const override;
 
     /// The force each obstacle exerts on the body (columns
-    /// contact_force_<k>_<axis>), the smallest distance and the active
+    /// contact_force_<k>_<axis>) and its moment about the obstacle's point
+    /// (contact_moment_<k>_<axis>), the smallest distance and the active
     /// pairs at @p u (ghosted). Collective.
     ContactMeasures
     measure(const VectorType &u, double t) const;

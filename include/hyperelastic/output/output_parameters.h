@@ -46,10 +46,15 @@ namespace hyperelastic
     /// step ("Points"): each 2 or 3 coordinates as written (the number is
     /// checked against the dimension at setup).
     std::vector<std::vector<double>> points;
+    /// 'Moment point': the point about which the reaction_moment_<id>
+    /// columns take the supports' moments; Problem/Dimension values.
+    std::vector<double> moment_point = {0., 0., 0.};
 
     static void
     declare(ParameterHandler &prm);
+    /// Reads the entries; 'Moment point' must have @p dim values (its 3D
+    /// default is cut to 2 values in 2D).
     void
-    parse(ParameterHandler &prm);
+    parse(ParameterHandler &prm, unsigned int dim);
   };
 } // namespace hyperelastic

@@ -1,7 +1,8 @@
 // What a converged step measures for its summary: the force each support
-// exerts on the body (per Dirichlet boundary id), the bounding box of the
-// deformed vertices, the displacement at the points of 'Output/Points' and
-// the range of the pressure unknowns. Set up once per mesh.
+// exerts on the body (per Dirichlet boundary id) and its moment about
+// 'Output/Moment point', the bounding box of the deformed vertices, the
+// displacement at the points of 'Output/Points' and the range of the
+// pressure unknowns. Set up once per mesh.
 #pragma once
 
 #include <deal.II/base/index_set.h>
@@ -15,6 +16,7 @@
 #include <hyperelastic/output/step_reporter.h>
 #include <hyperelastic/output/step_summary.h>
 
+#include <array>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -25,7 +27,8 @@ namespace hyperelastic
   class StepPostprocessor : public StepReporter<dim>
   {
   public:
-    /// Finds the dofs of each Dirichlet boundary id and locates the output
+    /// Finds the dofs of each Dirichlet boundary id (with their nodes'
+    /// reference positions, for the moments) and locates the output
     /// points (a point outside the mesh is an InputError now, not after the
     /// first step). @p pressure_dofs: the pressure unknowns (may be empty).
     /// Collective.
@@ -36,9 +39,9 @@ namespace hyperelastic
                       const dealii::IndexSet        &pressure_dofs);
     ~StepPostprocessor() override;
 
-    /// Fills the reactions from @p residual = f_int - f_ext (owned entries),
-    /// the bounding box, the point displacements and the pressure range
-    /// from @p u (ghosted). Collective.
+    /// Fills the reactions and their moments from @p residual = f_int -
+    /// f_ext (owned entries) and @p u, the bounding box, the point
+    /// displacements and the pressure range from @p u (ghosted). Collective.
     void
     measure(const VectorType &u,
             const VectorType &residual,
@@ -56,12 +59,21 @@ namespace hyperelastic
     const dealii::IndexSet         pressure_dofs;
     /// Whether there are pressure unknowns (on any rank).
     const bool has_pressure;
-    /// The distinct Dirichlet boundary ids and, for each, the owned dofs on
-    /// it whose component is prescribed there, with that component.
+    /// An owned dof on a support whose component is prescribed there: its
+    /// component, its node's reference position (support point) and the
+    /// dofs of all displacement components at that node (owned together).
+    struct ReactionDof
+    {
+      dealii::types::global_dof_index                  dof;
+      unsigned int                                     component;
+      dealii::Point<dim>                               X;
+      std::array<dealii::types::global_dof_index, dim> node;
+    };
+    /// The distinct Dirichlet boundary ids and, for each, its ReactionDofs.
     std::vector<dealii::types::boundary_id> reaction_ids;
-    std::vector<
-      std::vector<std::pair<dealii::types::global_dof_index, unsigned int>>>
-      reaction_dofs;
+    std::vector<std::vector<ReactionDof>>   reaction_dofs;
+    /// 'Output/Moment point'.
+    dealii::Point<dim> moment_point;
     /// The points of 'Output/Points' (null if there are none).
     std::unique_ptr<PointValues<dim>> point_values;
   };

@@ -22,6 +22,23 @@ namespace hyperelastic
     double      value;
   };
 
+  /// The moment about a point of a force @p force applied at @p arm from
+  /// that point, arm x force, as a 3D vector (2D: in the plane z = 0, so
+  /// only its z component is non-zero).
+  template <int dim>
+  dealii::Tensor<1, 3>
+  moment_of(const dealii::Tensor<1, dim> &arm,
+            const dealii::Tensor<1, dim> &force)
+  {
+    dealii::Tensor<1, 3> a, f;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        a[d] = arm[d];
+        f[d] = force[d];
+      }
+    return dealii::cross_product_3d(a, f);
+  }
+
   template <int dim>
   struct StepSummary
   {
@@ -48,7 +65,13 @@ namespace hyperelastic
     /// sum of f_int - f_ext over the dofs on that boundary, for the
     /// components the condition prescribes (the others are reported as 0).
     std::vector<std::pair<dealii::types::boundary_id, dealii::Tensor<1, dim>>>
-                           reactions;
+      reactions;
+    /// The moment of each support's nodal forces (those of reactions, in
+    /// the same order) about 'Output/Moment point' p, at the deformed
+    /// positions of their nodes: sum of (X + u - p) x f over the dofs on
+    /// that boundary (2D: only z is a column).
+    std::vector<std::pair<dealii::types::boundary_id, dealii::Tensor<1, 3>>>
+                           reaction_moments;
     dealii::Tensor<1, dim> deformed_min; ///< bounding box of x = X + u
     dealii::Tensor<1, dim> deformed_max;
     /// The displacement at each point of 'Output/Points', in their order.
@@ -70,6 +93,7 @@ namespace hyperelastic
     /// Every column of the CSV row, in order:
     /// step, load_factor, newton_iterations, linear_iterations, residual,
     /// energy, min_J, reaction_<id>_<x|y|z> per Dirichlet boundary id,
+    /// reaction_moment_<id>_x, _y (3D only), _z per Dirichlet boundary id,
     /// deformed_min_<axis> and deformed_max_<axis> per axis, load_increment,
     /// cut_backs, line_search_backtracks, amg_setups (CG with AMG only),
     /// inverted_cells, point<k>_u<axis>
@@ -94,6 +118,10 @@ namespace hyperelastic
       for (const auto &[id, force] : reactions)
         for (unsigned int d = 0; d < dim; ++d)
           add("reaction_" + std::to_string(id) + '_' + axes[d], force[d]);
+      for (const auto &[id, moment] : reaction_moments)
+        for (unsigned int d = (dim == 3 ? 0 : 2); d < 3; ++d)
+          add("reaction_moment_" + std::to_string(id) + '_' + axes[d],
+              moment[d]);
       for (unsigned int d = 0; d < dim; ++d)
         {
           add(std::string("deformed_min_") + axes[d], deformed_min[d]);
