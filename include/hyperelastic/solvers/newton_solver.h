@@ -104,10 +104,11 @@ namespace hyperelastic
       /// budget; the table counts on through them. The iteration before
       /// the first one of the current solve.
       unsigned int budget_start = 0;
-      /// Lagged quantities are updated within the solve once the residual
-      /// is below this (a fraction of the first residual after the step's
-      /// predictor or after the last update); negative: to be set from the
-      /// next residual; zero: at the converged state only.
+      /// After a shortened step, lagged quantities are updated within the
+      /// solve once the residual is below this (a fraction of the first
+      /// residual after the step's predictor or after the last update);
+      /// negative: to be set from the next residual; zero: after full steps
+      /// only.
       double early_lag_residual = -1.;
       /// The trust region's radius (NaN until the first trust-region
       /// iteration of the solve): kept through the load step.
@@ -273,19 +274,22 @@ namespace hyperelastic
                               unsigned int     iteration,
                               SolveState      &state) const;
 
-    /// Before convergence: updates the system's lagged quantities once the
-    /// residual has fallen to early_lag_reduction times the first one of
-    /// the current equations (SolveState::early_lag_residual); the new
-    /// equations get a fresh budget from @p iteration on.
+    /// Before convergence: updates the system's lagged quantities after
+    /// every full step (@p full_step: the line search accepted step length
+    /// 1), and after a shortened one once the residual has fallen to
+    /// early_lag_reduction times the first one of the current equations
+    /// (SolveState::early_lag_residual); the new equations get a fresh
+    /// budget from @p iteration on.
     void
     update_lagged_early(NonlinearSystem     &system,
                         const ResidualNorms &norms,
+                        bool                 full_step,
                         unsigned int         iteration,
                         SolveState          &state) const;
 
     /// The reduction of the residual after which lagged quantities are
     /// updated within a solve.
-    static constexpr double early_lag_reduction = 1e-3;
+    static constexpr double early_lag_reduction = 0.1;
 
     /// The Eisenstat-Walker forcing term for the next linear solve, from the
     /// rows so far of this Newton solve and the residual the last row's
