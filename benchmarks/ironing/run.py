@@ -209,6 +209,8 @@ def store(result):
     key = ("label", "h", "steps", "mu")
     rows = [r for r in rows if tuple(r[k] for k in key) !=
             tuple(str(result[k]) for k in key)] + [result]
+    rows.sort(key=lambda r: (-float(r["h"]), int(r["steps"]), -float(r["mu"]),
+                             r["label"]))
     with open(SUMMARY, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=FIELDS, extrasaction="ignore")
         writer.writeheader()
