@@ -13,7 +13,7 @@ The load factor t is the references' time halved, T = 2 t.
 
   /usr/bin/python3 benchmarks/ironing/run.py --label NAME [--exe BUILD/hyperelastic]
         [--h 0.1] [--steps 400] [--mu 0.3,0]
-  /usr/bin/python3 benchmarks/ironing/run.py --plot    # redraw ironing.png
+  /usr/bin/python3 benchmarks/ironing/run.py --plot    # redraw ironing.png (finest h)
   /usr/bin/python3 benchmarks/ironing/run.py --table   # ironing.csv as tables
   /usr/bin/python3 benchmarks/ironing/run.py --summarise-again  # ironing.csv from runs/
 
@@ -271,12 +271,13 @@ def plot():
         ts = [t for t in sorted(fx) if t in fy and t >= 1 and fy[t] > 0]
         ratio_axis.plot(ts, [abs(fx[t] / fy[t]) for t in ts], lw=0.7,
                         label=CODE_NAMES[code])
-    colours = "krbgm"
+    # The runs on the finest mesh only (all of them are in the tables), a
+    # colour per label, dashed without friction.
+    colours = "brkgm"
     summary = read_csv(SUMMARY) if os.path.exists(SUMMARY) else []
-    runs = []
-    for r in summary:
-        if (r["label"], r["h"], r["steps"]) not in runs:
-            runs.append((r["label"], r["h"], r["steps"]))
+    finest = min((float(r["h"]) for r in summary), default=0)
+    summary = [r for r in summary if float(r["h"]) == finest]
+    labels = sorted(set(r["label"] for r in summary))
     for r in summary:
         path = os.path.join(RUNS, run_name(r["label"], r["h"], r["steps"],
                                            r["mu"]) + ".csv")
@@ -285,8 +286,7 @@ def plot():
         series = forces(read_csv(path))
         name = "%s, h %s, %s steps, mu %s" % (r["label"], r["h"], r["steps"],
                                                r["mu"])
-        colour = colours[runs.index((r["label"], r["h"], r["steps"])) %
-                         len(colours)]
+        colour = colours[labels.index(r["label"]) % len(colours)]
         style = colour + ("-" if float(r["mu"]) > 0 else "--")
         axes[0].plot([p[0] for p in series], [p[1] for p in series], style,
                      lw=1.4, label=name)
