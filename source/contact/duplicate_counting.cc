@@ -52,15 +52,12 @@ namespace hyperelastic
         }
     if constexpr (dim == 3)
       {
+        using namespace primitive_geometry;
         const auto normal = [&](const unsigned int f) {
-          const auto &a = points[faces[f][0]], &b = points[faces[f][1]],
-                     &c           = points[faces[f][2]];
-          std::array<double, 3> n = {
-            {(b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
-             (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
-             (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])}};
-          const double length =
-            std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+          const Vec<double, 3> &a = points[faces[f][0]];
+          Vec<double, 3> n = cross(minus<double, 3>(points[faces[f][1]], a),
+                                   minus<double, 3>(points[faces[f][2]], a));
+          const double   length = std::sqrt(dot<double, 3>(n, n));
           for (double &x : n)
             x /= length;
           return n;
@@ -70,11 +67,9 @@ namespace hyperelastic
             bool sharp = list.size() != 2;
             if (!sharp)
               {
-                const auto   n = normal(list[0]), m = normal(list[1]);
-                const double s =
-                  std::sqrt(std::pow(n[1] * m[2] - n[2] * m[1], 2) +
-                            std::pow(n[2] * m[0] - n[0] * m[2], 2) +
-                            std::pow(n[0] * m[1] - n[1] * m[0], 2));
+                const Vec<double, 3> sine =
+                  cross(normal(list[0]), normal(list[1]));
+                const double s = std::sqrt(dot<double, 3>(sine, sine));
                 // Two faces in one plane (the faces' orientation is not
                 // known here: parallel or anti-parallel normals).
                 sharp = !(s < 1e-6);

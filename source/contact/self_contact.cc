@@ -538,9 +538,11 @@ namespace hyperelastic
   {
     std::vector<Lagged> result;
     for_each_active(s.x, 0, [&](const Pair &pair, const auto &) {
-      const Coordinates  c = coordinates(pair, s.x);
-      const DistanceCase k = classify_pair<dim>(c, pair.edge_edge);
-      Lagged             l;
+      const Coordinates c = coordinates(pair, s.x);
+      const PairTerms   terms =
+        pair_terms<dim>(c, pair.edge_edge, pair.correction);
+      const DistanceCase &k = terms.cases[0];
+      Lagged              l;
       l.pair = pair;
       l.beta = closest_point_coefficients<dim>(k, c);
       // n: the closest points' difference sum_i beta_i x_i, normalized.
@@ -567,10 +569,8 @@ namespace hyperelastic
           }
       // b'(d) of the pair's terms together (the corrections'
       // closest points move with the main one's over a flat boundary).
-      l.normal_force =
-        -kappa * pair.weight * mollifier *
-        pair_barrier_slope<dim>(
-          c, pair_terms<dim>(c, pair.edge_edge, pair.correction), d_hat);
+      l.normal_force = -kappa * pair.weight * mollifier *
+                       pair_barrier_slope<dim>(c, terms, d_hat);
       result.push_back(l);
     });
     return result;
