@@ -151,6 +151,12 @@ namespace hyperelastic
     active_constraints =
       moves_constraints ? &increment_constraints : &homogeneous_constraints;
     assemble_linearization_into(*active_constraints, tangent, rhs, projection);
+    // Stiff couplings (touching surfaces): the preconditioner solves on
+    // their dofs exactly ('Linear solver/Exact solve on stiff couplings').
+    if (parts.linear_solver_parameters.stiff_couplings_solve &&
+        elasticity->has_stiff_terms())
+      parts.linear_solver.set_stiff_unknowns(
+        elasticity->stiff_dofs(tangent.m()));
     predictor_linearization = moves_constraints || moves_terms;
     return predictor_linearization;
   }

@@ -1,7 +1,9 @@
 // Mesh file formats: one mesh (meshes/two_regions_<dim>d.msh, two material
 // tags and six boundary tags) written by this test as gmsh ASCII 2.2 and
 // 4.1 and binary 2.2 and 4.1 (through the gmsh API), as big-endian binary
-// 2.2 and 4.1 (written here byte by byte), as MEDIT .mesh and as legacy VTK
+// 2.2 and 4.1 (written here byte by byte; 2.2 also with a binary
+// $ElementData section that ends as TetWild's do, without a line end before
+// $EndElementData), as MEDIT .mesh and as legacy VTK
 // (ASCII version 2 with SCALARS, binary version 5.1 with OFFSETS and
 // CONNECTIVITY and a FIELD array, and the other way round). Each is read
 // back by read_mesh_file(): the same vertices (bit for bit), cells, material
@@ -197,6 +199,22 @@ namespace
         dim + 1);
     out += "\n$EndElements\n";
     return out;
+  }
+
+  /// A binary $ElementData section of one value per cell as TetWild writes
+  /// it (bunny_tetwild_80.msh of wildmeshing/data): its $EndElementData
+  /// follows the binary values without a line end.
+  std::string
+  tetwild_element_data(const std::size_t n_cells)
+  {
+    std::string out = "$ElementData\n1\n\"quality\"\n1\n0.0\n3\n0\n1\n" +
+                      std::to_string(n_cells) + "\n";
+    for (std::size_t i = 0; i < n_cells; ++i)
+      {
+        put<std::int32_t>(out, i + 1, false);
+        put<double>(out, 0.5 * i, false);
+      }
+    return out + "$EndElementData\n";
   }
 
   /// The mesh as a binary gmsh file of format 4.1 (big-endian if @p big),
@@ -571,6 +589,7 @@ namespace
       {"gmsh binary 2.2 big-endian", d + "big22.msh"},
       {"gmsh binary 4.1 big-endian", d + "big41.msh"},
       {"gmsh binary 2.2 little-endian (own writer)", d + "little22.msh"},
+      {"gmsh binary 2.2 with TetWild's $ElementData", d + "tetwild22.msh"},
       {"MEDIT", d + "medit.mesh"},
       {"VTK 2.0 ASCII, SCALARS MaterialID", d + "ascii20.vtk"},
       {"VTK 5.1 binary, FIELD gmsh:physical", d + "binary51.vtk"},
@@ -607,6 +626,9 @@ namespace
           write_text(d + "big22.msh", gmsh_binary_22(reference, true));
           write_text(d + "big41.msh", gmsh_binary_41(reference, true));
           write_text(d + "little22.msh", gmsh_binary_22(reference, false));
+          write_text(d + "tetwild22.msh",
+                     gmsh_binary_22(reference, false) +
+                       tetwild_element_data(reference.cells.size()));
           write_text(d + "medit.mesh", medit(reference));
           write_text(d + "ascii20.vtk", vtk(reference, false, false));
           write_text(d + "binary51.vtk", vtk(reference, true, true));

@@ -56,6 +56,8 @@ namespace hyperelastic
       moving_sets.push_back(moving);
     if (auto *coupling = dynamic_cast<CouplingTerm<dim> *>(added))
       coupling_terms.push_back(coupling);
+    if (auto *stiff = dynamic_cast<StiffTerm<dim> *>(added))
+      stiff_terms.push_back(stiff);
     terms.push_back(std::move(term));
   }
 

@@ -220,7 +220,6 @@ namespace hyperelastic
     throw_input_error_of_first_rank(problem, comm);
   }
 
-
   template <int dim>
   bool
   ObstacleContact<dim>::has_friction() const
@@ -598,6 +597,7 @@ namespace hyperelastic
     // The right-hand side's switch to adding, on every rank (collective in
     // Trilinos); add_condensed then adds on the ranks with contact only.
     rhs.add(std::vector<types::global_dof_index>(), std::vector<double>());
+    stiff_rows.clear();
     for_each_pair(
       u,
       t,
@@ -612,6 +612,9 @@ namespace hyperelastic
               block(i, j) = p.stiffness[i][j];
           }
         add_condensed(block, dofs, constraints, matrix, rhs);
+        for (const types::global_dof_index dof : dofs)
+          if (rhs.in_local_range(dof) && !constraints.is_constrained(dof))
+            stiff_rows.push_back(dof);
         // K w, K the pair's stiffness in the end state.
         if (!moving)
           return;
@@ -626,6 +629,14 @@ namespace hyperelastic
             }
       });
     rhs.add(drag_rows, drag);
+  }
+
+  template <int dim>
+  void
+  ObstacleContact<dim>::add_stiff_dofs(IndexSet &dofs) const
+  {
+    for (const types::global_dof_index dof : stiff_rows)
+      dofs.add_index(dof);
   }
 
   template <int dim>
@@ -822,7 +833,7 @@ namespace hyperelastic
     double              change = 0., largest = 0.;
     for (unsigned int i = 0; i < next.size(); ++i)
       {
-        change = std::max(change,
+        change  = std::max(change,
                           std::abs(next[i].normal_force -
                                    lagged[i].normal_force_after(since_start)));
         largest = std::max(largest, next[i].normal_force);
@@ -858,8 +869,8 @@ namespace hyperelastic
     // Moments about each obstacle's point where it stands (Point moved by
     // its Motion: the centre of its rotation), the forces at the vertices.
     const std::vector<Placed> where = placed(clock.obstacle_time(t));
-    double       min_distance = std::numeric_limits<double>::infinity();
-    unsigned int active       = 0;
+    double       min_distance       = std::numeric_limits<double>::infinity();
+    unsigned int active             = 0;
     for_each_pair(
       u,
       t,

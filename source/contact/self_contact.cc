@@ -247,12 +247,10 @@ namespace hyperelastic
           << (dim == 2          ? "vertex and segment"
               : worst.edge_edge ? "edges"
                                 : "vertex and triangle")
-          << " near (" << vertices[worst.v[0]].X << ") are "
-          << global_closest
+          << " near (" << vertices[worst.v[0]].X << ") are " << global_closest
           << " apart in the reference configuration, closer than the "
              "barrier distance d_hat = "
-          << d_hat
-          << " (they would repel each other before any load): ";
+          << d_hat << " (they would repel each other before any load): ";
         if (global_closest > 0.)
           s << "set 'Contact/Barrier distance' below " << global_closest
             << " or refine the mesh there";
@@ -393,7 +391,7 @@ namespace hyperelastic
                                   const TangentProjection          projection,
                                   const AffineConstraints<double> &constraints,
                                   MatrixType                      &matrix,
-                                  VectorType &rhs) const
+                                  VectorType                      &rhs) const
   {
     const auto scope = timed_section(timer, "contact");
     // Each pair's Hessian exact, or projected to positive semi-definite
@@ -417,6 +415,7 @@ namespace hyperelastic
     std::vector<double>                  rhs_values;
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
+    stiff_rows.clear();
     const auto add = [&](const Pair &pair, const auto &b, const bool project) {
       const SmallMatrix<n_coordinates> K =
         project ? positive_semidefinite_part<n_coordinates>(b.hessian)
@@ -430,6 +429,7 @@ namespace hyperelastic
             {
               if (!std::isnan(prescribed[pair.v[i] * dim + r]))
                 continue; // a constrained row reads d du_r = d g_r
+              stiff_rows.push_back(row_vertex.dofs[r]);
               columns.clear();
               values.clear();
               double moved = 0.;
@@ -696,6 +696,13 @@ namespace hyperelastic
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           pattern.add(vertices[a].dofs[i], vertices[b].dofs[j]);
+  }
+  template <int dim>
+  void
+  SelfContact<dim>::add_stiff_dofs(IndexSet &dofs) const
+  {
+    for (const types::global_dof_index dof : stiff_rows)
+      dofs.add_index(dof);
   }
 
   template <int dim>

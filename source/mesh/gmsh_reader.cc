@@ -235,6 +235,13 @@ namespace hyperelastic
       void
       skip_section(const std::string_view name)
       {
+        // Binary data (TetWild's $ElementData) may run up to its $End
+        // marker without a line end.
+        if (binary)
+          {
+            in.skip_past("$End" + std::string(name.substr(1)), name);
+            return;
+          }
         for (;;)
           {
             const std::string_view w = in.skip_to_line_starting("$E", name);

@@ -90,6 +90,16 @@ namespace hyperelastic
   }
 
   void
+  MeshFileText::skip_past(const std::string_view marker,
+                          const std::string_view section)
+  {
+    const std::size_t found = text.find(marker, pos);
+    if (found == std::string_view::npos)
+      fail("unexpected end of file in section " + std::string(section));
+    pos = found + marker.size();
+  }
+
+  void
   MeshFileText::skip_blanks_on_line()
   {
     while (pos < text.size() && (text[pos] == ' ' || text[pos] == '\t'))

@@ -67,12 +67,16 @@ namespace hyperelastic
     // over all ranks: a reallocated matrix may land at the old address on
     // one rank and not on another, and ranks that disagree would enter ML's
     // collective set-up out of step (seen as an ML error and a hang).
-    const bool new_matrix = Utilities::MPI::max(
-                              int(&A.trilinos_matrix() != amg_matrix),
-                              A.get_mpi_communicator()) != 0;
+    const bool new_matrix =
+      Utilities::MPI::max(int(&A.trilinos_matrix() != amg_matrix),
+                          A.get_mpi_communicator()) != 0;
     if (!amg_built || rebuild_requested ||
         parameters.amg_rebuild_growth == 0. || new_matrix)
       build_amg(A, !new_matrix, true);
+    // The stiff couplings' unknowns (set for this tangent's terms): an
+    // exact solve on them around the hierarchy.
+    if (!saddle_point && parameters.stiff_couplings_solve)
+      stiff_correction.initialize(A, stiff_unknowns);
   }
 
   void
@@ -427,6 +431,19 @@ namespace hyperelastic
   LinearSolver::precondition(TrilinosWrappers::MPI::Vector       &z,
                              const TrilinosWrappers::MPI::Vector &r) const
   {
+    if (stiff_correction.active())
+      stiff_correction.vmult(z, r, [this](VectorType &y, const VectorType &s) {
+        whole_tangent_preconditioner(y, s);
+      });
+    else
+      whole_tangent_preconditioner(z, r);
+  }
+
+  void
+  LinearSolver::whole_tangent_preconditioner(
+    TrilinosWrappers::MPI::Vector       &z,
+    const TrilinosWrappers::MPI::Vector &r) const
+  {
     if (replacement_in_use)
       replacement->vmult(z, r);
     else
@@ -487,6 +504,8 @@ namespace hyperelastic
             SolverGMRES<TrilinosWrappers::MPI::Vector>(control, data)
               .solve(A, x, b, *saddle_point);
           }
+        else if (stiff_correction.active())
+          krylov(A, x, b, Preconditioning{*this}, control);
         else if (replacement_in_use)
           krylov(A, x, b, *replacement, control);
         else

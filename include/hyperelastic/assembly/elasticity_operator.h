@@ -173,6 +173,26 @@ namespace hyperelastic
       return any;
     }
 
+    /// Whether a term has a stiffness far above the elastic one on some
+    /// dofs (StiffTerm).
+    bool
+    has_stiff_terms() const
+    {
+      return !stiff_terms.empty();
+    }
+
+    /// The owned dofs that the stiff terms' last stiffness wrote, in a set
+    /// of @p n_dofs (StiffTerm::add_stiff_dofs over every such term).
+    dealii::IndexSet
+    stiff_dofs(const dealii::types::global_dof_index n_dofs) const
+    {
+      dealii::IndexSet dofs(n_dofs);
+      for (const StiffTerm<dim> *term : stiff_terms)
+        term->add_stiff_dofs(dofs);
+      dofs.compress();
+      return dofs;
+    }
+
     /// Adds the coupling terms' couplings to @p pattern.
     void
     add_couplings(dealii::DynamicSparsityPattern &pattern) const
@@ -277,6 +297,7 @@ namespace hyperelastic
     std::vector<AdmissibleSetTerm<dim> *>       admissible_sets;
     std::vector<MovingAdmissibleSetTerm<dim> *> moving_sets;
     std::vector<CouplingTerm<dim> *>            coupling_terms;
+    std::vector<const StiffTerm<dim> *>         stiff_terms;
 
     mutable VectorType dead_cache;
     mutable double dead_cache_time = std::numeric_limits<double>::quiet_NaN();

@@ -7,11 +7,15 @@
 //   step; MovingAdmissibleSetTerm: such a set that moves with t (obstacles
 //   moving within a step) and is carried along by Newton's iterations;
 // - CouplingTerm: couplings between dofs that the mesh's cells do not make
-//   (self-contact pairs between distant parts of the boundary).
+//   (self-contact pairs between distant parts of the boundary);
+// - StiffTerm: a stiffness far above the elastic one on a few dofs (the
+//   barrier between touching surfaces), which the linear solver's
+//   preconditioner solves on exactly.
 // ElasticityOperator::add_term finds them and calls each over the terms that
 // have it.
 #pragma once
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
@@ -61,7 +65,8 @@ namespace hyperelastic
     /// updates. Collective; nothing by default.
     virtual void
     extrapolate_lagged(const VectorType & /*u_before*/, double /*t_before*/)
-    {}
+    {
+    }
 
     /// A trial point @p trial of Newton's line search from the iterate
     /// @p u (owned entries). A term whose potential has a kink that the
@@ -77,7 +82,8 @@ namespace hyperelastic
       VectorType & /*trial*/,
       double /*t*/,
       const dealii::AffineConstraints<double> & /*constraints*/) const
-    {}
+    {
+    }
   };
 
   /// A term whose forces hold the iterates in an admissible set.
@@ -135,5 +141,19 @@ namespace hyperelastic
     /// @p pattern, with a margin so that a few iterates more fit in.
     virtual void
     add_couplings(dealii::DynamicSparsityPattern &pattern) const = 0;
+  };
+
+  /// A term whose stiffness on a few dofs is far above the elastic one.
+  template <int dim>
+  class StiffTerm
+  {
+  public:
+    virtual ~StiffTerm() = default;
+
+    /// Adds to @p dofs the owned dofs whose rows the last add_stiffness()
+    /// wrote (contact: the vertices of the pairs within the barrier's
+    /// reach and of friction's sliding pairs).
+    virtual void
+    add_stiff_dofs(dealii::IndexSet &dofs) const = 0;
   };
 } // namespace hyperelastic

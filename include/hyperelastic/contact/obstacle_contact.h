@@ -74,7 +74,8 @@ namespace hyperelastic
   template <int dim>
   class ObstacleContact : public EnergyTerm<dim>,
                           public SteppedTerm<dim>,
-                          public MovingAdmissibleSetTerm<dim>
+                          public MovingAdmissibleSetTerm<dim>,
+                          public StiffTerm<dim>
   {
   public:
     /// Finds the owned boundary vertices, sets d_hat and kappa (automatic
@@ -123,6 +124,9 @@ namespace hyperelastic
     /// kappa sum b(d); +infinity if a distance is not positive.
     double
     energy(const VectorType &u, double t) const override;
+
+    void
+    add_stiff_dofs(dealii::IndexSet &dofs) const override;
 
     /// Along @p direction with the obstacles moving jointly from where
     /// they are to their place at @p t.
@@ -224,6 +228,9 @@ namespace hyperelastic
     }
 
   private:
+    /// The owned, unconstrained rows the last add_stiffness() wrote.
+    mutable std::vector<dealii::types::global_dof_index> stiff_rows;
+
     /// One boundary vertex: its reference position and its dofs.
     struct Vertex
     {
@@ -293,7 +300,7 @@ namespace hyperelastic
     /// Friction's lagged quantities of a vertex-obstacle pair.
     struct Lagged
     {
-      double                          normal_force = 0.; ///< lambda
+      double normal_force = 0.; ///< lambda
       /// d lambda / dt, extrapolated from the last two converged states
       /// (zero once updated within the step).
       double                          rate = 0.;
@@ -361,13 +368,13 @@ namespace hyperelastic
     std::vector<std::shared_ptr<const ObstacleSurface<dim>>> surfaces;
     std::vector<std::unique_ptr<dealii::Function<dim>>>      motions;
     /// The rotation angles (null for obstacles that do not turn).
-    std::vector<std::unique_ptr<dealii::Function<dim>>>      angles;
-    const MPI_Comm                                           comm;
-    const bool                                               dynamic;
-    std::vector<Vertex>                                      vertices;
-    BarrierSettings                                          shared_settings;
-    double                                                   d_hat_value = 0.;
-    double                                                   kappa       = 0.;
+    std::vector<std::unique_ptr<dealii::Function<dim>>> angles;
+    const MPI_Comm                                      comm;
+    const bool                                          dynamic;
+    std::vector<Vertex>                                 vertices;
+    BarrierSettings                                     shared_settings;
+    double                                              d_hat_value = 0.;
+    double                                              kappa       = 0.;
     /// eps (quasi-static) or eps_v (dynamics).
     double eps_setting = 0.;
     /// Friction's lagging updates ('Friction lagging updates' a step).
@@ -379,6 +386,6 @@ namespace hyperelastic
     ObstacleClock                   clock;
     std::vector<dealii::Point<dim>> start_positions;
     std::vector<Lagged>             lagged;
-    dealii::TimerOutput *timer      = nullptr;
+    dealii::TimerOutput            *timer = nullptr;
   };
 } // namespace hyperelastic

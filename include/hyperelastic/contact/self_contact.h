@@ -78,7 +78,8 @@ namespace hyperelastic
   class SelfContact : public EnergyTerm<dim>,
                       public SteppedTerm<dim>,
                       public AdmissibleSetTerm<dim>,
-                      public CouplingTerm<dim>
+                      public CouplingTerm<dim>,
+                      public StiffTerm<dim>
   {
   public:
     /// Gathers the boundary (collective), sets d_hat and kappa as the
@@ -150,6 +151,9 @@ namespace hyperelastic
     needs_new_couplings(const VectorType &u, double t) override;
     void
     add_couplings(dealii::DynamicSparsityPattern &pattern) const override;
+
+    void
+    add_stiff_dofs(dealii::IndexSet &dofs) const override;
 
     /// The smallest distance of the self pairs (capped at d_hat) and the
     /// number of active ones at @p u (ghosted). Collective.
@@ -414,6 +418,8 @@ namespace hyperelastic
     /// The candidates within d_hat of the last evaluated positions.
     mutable std::vector<dealii::Point<dim>> candidates_at;
     mutable std::vector<Pair>               near_pairs;
+    /// The owned, unconstrained rows the last add_stiffness() wrote.
+    mutable std::vector<dealii::types::global_dof_index> stiff_rows;
 
     mutable Cost         spent;
     dealii::TimerOutput *timer = nullptr;

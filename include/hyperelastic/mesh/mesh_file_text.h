@@ -103,6 +103,12 @@ namespace hyperelastic
     skip_to_line_starting(const std::string_view prefix,
                           const std::string_view section);
 
+    /// Moves past the next occurrence of @p marker anywhere (binary data
+    /// need not end with a line end before it); InputError naming
+    /// @p section at the end of the file.
+    void
+    skip_past(const std::string_view marker, const std::string_view section);
+
     /// Skips spaces and tabs, not line ends.
     void
     skip_blanks_on_line();

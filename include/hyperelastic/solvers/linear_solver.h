@@ -11,6 +11,7 @@
 
 #include <hyperelastic/solvers/linear_solver_parameters.h>
 #include <hyperelastic/solvers/saddle_point_preconditioner.h>
+#include <hyperelastic/solvers/stiff_subspace_correction.h>
 #include <hyperelastic/solvers/tangent_preconditioner.h>
 
 #include <memory>
@@ -50,6 +51,16 @@ namespace hyperelastic
     {
       saddle_point = std::move(preconditioner);
       symmetric    = false;
+    }
+
+    /// The owned unknowns whose couplings in the tangents to come are far
+    /// stiffer than the rest (set before each prepare(); empty: none). The
+    /// preconditioner then solves on them exactly around the AMG (see
+    /// StiffSubspaceCorrection).
+    void
+    set_stiff_unknowns(const dealii::IndexSet &unknowns)
+    {
+      stiff_unknowns = unknowns;
     }
 
     /// Makes the preconditioner ready for @p A: builds the AMG hierarchy the
@@ -188,6 +199,9 @@ namespace hyperelastic
     std::vector<double> block_null_space;
     /// set_stiffness_contrast().
     double stiffness_contrast = 1.;
+    /// set_stiff_unknowns() and the correction built on them.
+    dealii::IndexSet        stiff_unknowns;
+    StiffSubspaceCorrection stiff_correction;
 
     /// Computes the hierarchy for @p A now: the replacement preconditioner
     /// if there is one and @p may_use_replacement; else ML, refreshed on
@@ -209,10 +223,30 @@ namespace hyperelastic
            unsigned int                                  max_iterations,
            bool *negative_curvature = nullptr) const;
 
-    /// z = M^-1 r with the current hierarchy (AMG or the replacement).
+    /// z = B r: the stiff-subspace correction around
+    /// whole_tangent_preconditioner() where there are stiff unknowns,
+    /// else that alone.
     void
     precondition(dealii::TrilinosWrappers::MPI::Vector       &z,
                  const dealii::TrilinosWrappers::MPI::Vector &r) const;
+
+    /// z = M^-1 r with the current hierarchy (AMG or the replacement).
+    void
+    whole_tangent_preconditioner(
+      dealii::TrilinosWrappers::MPI::Vector       &z,
+      const dealii::TrilinosWrappers::MPI::Vector &r) const;
+
+    /// precondition() for deal.II's Krylov solvers.
+    struct Preconditioning
+    {
+      const LinearSolver &solver;
+      void
+      vmult(dealii::TrilinosWrappers::MPI::Vector       &z,
+            const dealii::TrilinosWrappers::MPI::Vector &r) const
+      {
+        solver.precondition(z, r);
+      }
+    };
 
     /// CG (GMRES if not symmetric) with @p preconditioner.
     template <typename Preconditioner>

@@ -39,6 +39,8 @@ namespace hyperelastic
     /// preconditioner (TwoLevelPreconditioner) instead of ML on the P2
     /// matrix.
     bool p2_two_level = true;
+    /// 'Exact solve on stiff couplings'.
+    bool stiff_couplings_solve = false;
     /// 'AMG for contrast': auto (on for regions whose stiffnesses differ
     /// by more than contrast_threshold), on or off. On: ML's
     /// energy-minimizing prolongators and an aggregation threshold of at
