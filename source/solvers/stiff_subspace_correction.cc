@@ -42,6 +42,56 @@ namespace hyperelastic
                      comm);
       return all;
     }
+
+    /// The entries of A_SS in this rank's rows, in the block's numbering.
+    struct Entries
+    {
+      std::vector<int>    rows, columns;
+      std::vector<double> values;
+    };
+
+    /// The block's unknowns are numbered 0, 1, ... over the ranks in order,
+    /// this rank's @p stiff from @p n_before on. Each stiff row holds its
+    /// number + 1, carried to the columns that other ranks own.
+    Entries
+    block_entries(const MatrixType &A,
+                  const IndexSet   &stiff,
+                  const int         n_before)
+    {
+      const Epetra_CrsMatrix &M       = A.trilinos_matrix();
+      const Epetra_Map       &row_map = M.RowMap();
+      const Epetra_Map       &col_map = M.ColMap();
+      Epetra_Vector           on_rows(row_map), on_columns(col_map);
+      std::vector<int>        rows;
+      rows.reserve(stiff.n_elements());
+      for (const types::global_dof_index dof : stiff)
+        {
+          const int lid = row_map.LID(static_cast<int>(dof));
+          AssertThrow(lid >= 0, ExcInternalError());
+          on_rows[lid] = n_before + static_cast<int>(rows.size()) + 1;
+          rows.push_back(lid);
+        }
+      Epetra_Import to_columns(col_map, row_map);
+      on_columns.Import(on_rows, to_columns, Insert);
+
+      Entries entries;
+      for (const int lid : rows)
+        {
+          int     n;
+          double *row_values;
+          int    *row_columns;
+          M.ExtractMyRowView(lid, n, row_values, row_columns);
+          for (int k = 0; k < n; ++k)
+            if (on_columns[row_columns[k]] != 0.)
+              {
+                entries.rows.push_back(static_cast<int>(on_rows[lid]) - 1);
+                entries.columns.push_back(
+                  static_cast<int>(on_columns[row_columns[k]]) - 1);
+                entries.values.push_back(row_values[k]);
+              }
+        }
+      return entries;
+    }
   } // namespace
 
   void
@@ -63,46 +113,10 @@ namespace hyperelastic
       return;
     const int n_before = offsets[Utilities::MPI::this_mpi_process(comm)];
 
-    // The block's unknowns are numbered 0, 1, ... over the ranks in order.
-    // Each stiff row holds its number + 1, carried to the columns that
-    // other ranks own.
-    const Epetra_CrsMatrix &M       = A.trilinos_matrix();
-    const Epetra_Map       &row_map = M.RowMap();
-    const Epetra_Map       &col_map = M.ColMap();
-    Epetra_Vector           on_rows(row_map), on_columns(col_map);
-    std::vector<int>        rows;
-    rows.reserve(n_mine);
-    for (const types::global_dof_index dof : stiff)
-      {
-        const int lid = row_map.LID(static_cast<int>(dof));
-        AssertThrow(lid >= 0, ExcInternalError());
-        on_rows[lid] = n_before + static_cast<int>(rows.size()) + 1;
-        rows.push_back(lid);
-      }
-    Epetra_Import to_columns(col_map, row_map);
-    on_columns.Import(on_rows, to_columns, Insert);
-
-    std::vector<int>    entry_rows, entry_columns;
-    std::vector<double> entry_values;
-    for (const int lid : rows)
-      {
-        int     n;
-        double *row_values;
-        int    *row_columns;
-        M.ExtractMyRowView(lid, n, row_values, row_columns);
-        for (int k = 0; k < n; ++k)
-          if (on_columns[row_columns[k]] != 0.)
-            {
-              entry_rows.push_back(static_cast<int>(on_rows[lid]) - 1);
-              entry_columns.push_back(
-                static_cast<int>(on_columns[row_columns[k]]) - 1);
-              entry_values.push_back(row_values[k]);
-            }
-      }
-    const std::vector<int> all_rows    = gather_everywhere(entry_rows, comm);
-    const std::vector<int> all_columns = gather_everywhere(entry_columns, comm);
-    const std::vector<double> all_values =
-      gather_everywhere(entry_values, comm);
+    const Entries          mine        = block_entries(A, stiff, n_before);
+    const std::vector<int> all_rows    = gather_everywhere(mine.rows, comm);
+    const std::vector<int> all_columns = gather_everywhere(mine.columns, comm);
+    const std::vector<double> all_values = gather_everywhere(mine.values, comm);
 
     DynamicSparsityPattern dsp(n_global, n_global);
     for (unsigned int k = 0; k < all_rows.size(); ++k)
