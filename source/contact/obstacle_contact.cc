@@ -220,6 +220,7 @@ namespace hyperelastic
     throw_input_error_of_first_rank(problem, comm);
   }
 
+
   template <int dim>
   bool
   ObstacleContact<dim>::has_friction() const
@@ -833,7 +834,7 @@ namespace hyperelastic
     double              change = 0., largest = 0.;
     for (unsigned int i = 0; i < next.size(); ++i)
       {
-        change  = std::max(change,
+        change = std::max(change,
                           std::abs(next[i].normal_force -
                                    lagged[i].normal_force_after(since_start)));
         largest = std::max(largest, next[i].normal_force);
@@ -869,8 +870,8 @@ namespace hyperelastic
     // Moments about each obstacle's point where it stands (Point moved by
     // its Motion: the centre of its rotation), the forces at the vertices.
     const std::vector<Placed> where = placed(clock.obstacle_time(t));
-    double       min_distance       = std::numeric_limits<double>::infinity();
-    unsigned int active             = 0;
+    double       min_distance = std::numeric_limits<double>::infinity();
+    unsigned int active       = 0;
     for_each_pair(
       u,
       t,

@@ -247,10 +247,12 @@ namespace hyperelastic
           << (dim == 2          ? "vertex and segment"
               : worst.edge_edge ? "edges"
                                 : "vertex and triangle")
-          << " near (" << vertices[worst.v[0]].X << ") are " << global_closest
+          << " near (" << vertices[worst.v[0]].X << ") are "
+          << global_closest
           << " apart in the reference configuration, closer than the "
              "barrier distance d_hat = "
-          << d_hat << " (they would repel each other before any load): ";
+          << d_hat
+          << " (they would repel each other before any load): ";
         if (global_closest > 0.)
           s << "set 'Contact/Barrier distance' below " << global_closest
             << " or refine the mesh there";
@@ -391,7 +393,7 @@ namespace hyperelastic
                                   const TangentProjection          projection,
                                   const AffineConstraints<double> &constraints,
                                   MatrixType                      &matrix,
-                                  VectorType                      &rhs) const
+                                  VectorType &rhs) const
   {
     const auto scope = timed_section(timer, "contact");
     // Each pair's Hessian exact, or projected to positive semi-definite
@@ -697,6 +699,7 @@ namespace hyperelastic
         for (unsigned int j = 0; j < dim; ++j)
           pattern.add(vertices[a].dofs[i], vertices[b].dofs[j]);
   }
+
   template <int dim>
   void
   SelfContact<dim>::add_stiff_dofs(IndexSet &dofs) const

@@ -67,9 +67,9 @@ namespace hyperelastic
     // over all ranks: a reallocated matrix may land at the old address on
     // one rank and not on another, and ranks that disagree would enter ML's
     // collective set-up out of step (seen as an ML error and a hang).
-    const bool new_matrix =
-      Utilities::MPI::max(int(&A.trilinos_matrix() != amg_matrix),
-                          A.get_mpi_communicator()) != 0;
+    const bool new_matrix = Utilities::MPI::max(
+                              int(&A.trilinos_matrix() != amg_matrix),
+                              A.get_mpi_communicator()) != 0;
     if (!amg_built || rebuild_requested ||
         parameters.amg_rebuild_growth == 0. || new_matrix)
       build_amg(A, !new_matrix, true);

@@ -25,21 +25,9 @@ namespace hyperelastic
     std::vector<T>
     gather_everywhere(const std::vector<T> &mine, const MPI_Comm comm)
     {
-      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-      const int          n_mine  = static_cast<int>(mine.size());
-      std::vector<int>   counts(n_ranks), offsets(n_ranks, 0);
-      MPI_Allgather(&n_mine, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-      for (unsigned int r = 1; r < n_ranks; ++r)
-        offsets[r] = offsets[r - 1] + counts[r - 1];
-      std::vector<T> all(offsets.back() + counts.back());
-      MPI_Allgatherv(mine.data(),
-                     n_mine,
-                     Utilities::MPI::mpi_type_id_for_type<T>,
-                     all.data(),
-                     counts.data(),
-                     offsets.data(),
-                     Utilities::MPI::mpi_type_id_for_type<T>,
-                     comm);
+      std::vector<T> all;
+      for (const std::vector<T> &part : Utilities::MPI::all_gather(comm, mine))
+        all.insert(all.end(), part.begin(), part.end());
       return all;
     }
 
@@ -98,15 +86,12 @@ namespace hyperelastic
   StiffSubspaceCorrection::initialize(const MatrixType &A,
                                       const IndexSet   &stiff_dofs)
   {
-    const MPI_Comm comm        = A.get_mpi_communicator();
-    matrix                     = &A;
-    stiff                      = stiff_dofs;
-    const int          n_mine  = static_cast<int>(stiff.n_elements());
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    counts.assign(n_ranks, 0);
-    offsets.assign(n_ranks, 0);
-    MPI_Allgather(&n_mine, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-    for (unsigned int r = 1; r < n_ranks; ++r)
+    const MPI_Comm comm = A.get_mpi_communicator();
+    matrix              = &A;
+    stiff               = stiff_dofs;
+    counts = Utilities::MPI::all_gather(comm, int(stiff.n_elements()));
+    offsets.assign(counts.size(), 0);
+    for (unsigned int r = 1; r < counts.size(); ++r)
       offsets[r] = offsets[r - 1] + counts[r - 1];
     n_global = offsets.back() + counts.back();
     if (n_global == 0)

@@ -65,8 +65,7 @@ namespace hyperelastic
     /// updates. Collective; nothing by default.
     virtual void
     extrapolate_lagged(const VectorType & /*u_before*/, double /*t_before*/)
-    {
-    }
+    {}
 
     /// A trial point @p trial of Newton's line search from the iterate
     /// @p u (owned entries). A term whose potential has a kink that the
@@ -82,8 +81,7 @@ namespace hyperelastic
       VectorType & /*trial*/,
       double /*t*/,
       const dealii::AffineConstraints<double> & /*constraints*/) const
-    {
-    }
+    {}
   };
 
   /// A term whose forces hold the iterates in an admissible set.

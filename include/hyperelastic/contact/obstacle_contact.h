@@ -300,7 +300,7 @@ namespace hyperelastic
     /// Friction's lagged quantities of a vertex-obstacle pair.
     struct Lagged
     {
-      double normal_force = 0.; ///< lambda
+      double                          normal_force = 0.; ///< lambda
       /// d lambda / dt, extrapolated from the last two converged states
       /// (zero once updated within the step).
       double                          rate = 0.;
@@ -368,13 +368,13 @@ namespace hyperelastic
     std::vector<std::shared_ptr<const ObstacleSurface<dim>>> surfaces;
     std::vector<std::unique_ptr<dealii::Function<dim>>>      motions;
     /// The rotation angles (null for obstacles that do not turn).
-    std::vector<std::unique_ptr<dealii::Function<dim>>> angles;
-    const MPI_Comm                                      comm;
-    const bool                                          dynamic;
-    std::vector<Vertex>                                 vertices;
-    BarrierSettings                                     shared_settings;
-    double                                              d_hat_value = 0.;
-    double                                              kappa       = 0.;
+    std::vector<std::unique_ptr<dealii::Function<dim>>>      angles;
+    const MPI_Comm                                           comm;
+    const bool                                               dynamic;
+    std::vector<Vertex>                                      vertices;
+    BarrierSettings                                          shared_settings;
+    double                                                   d_hat_value = 0.;
+    double                                                   kappa       = 0.;
     /// eps (quasi-static) or eps_v (dynamics).
     double eps_setting = 0.;
     /// Friction's lagging updates ('Friction lagging updates' a step).
@@ -386,6 +386,6 @@ namespace hyperelastic
     ObstacleClock                   clock;
     std::vector<dealii::Point<dim>> start_positions;
     std::vector<Lagged>             lagged;
-    dealii::TimerOutput            *timer = nullptr;
+    dealii::TimerOutput *timer      = nullptr;
   };
 } // namespace hyperelastic

@@ -27,8 +27,9 @@ namespace hyperelastic
   {
   public:
     /// Extracts A_SS from @p A for the owned unknowns @p stiff (each rank
-    /// its own) and factorizes it with Amesos KLU. Collective; an empty
-    /// subspace on every rank leaves the correction inactive.
+    /// its own), gathers it on every rank and factorizes it with UMFPACK.
+    /// Collective; an empty subspace on every rank leaves the correction
+    /// inactive.
     void
     initialize(const MatrixType &A, const dealii::IndexSet &stiff);
 
