@@ -2,6 +2,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/calibration/run_fit.h>
 #include <hyperelastic/parameters.h>
 #include <hyperelastic/problem.h>
 
@@ -17,6 +18,9 @@ namespace
     "                                          checkpoint its scene wrote\n"
     "                                          (Output/Checkpoint every),\n"
     "                                          on as many ranks\n"
+    "       mpirun -np N hyperelastic --fit FIT.prm\n"
+    "                                          fit a model's constants to test\n"
+    "                                          curves (doc/calibration.md)\n"
     "       hyperelastic --print-parameters    every scene parameter with its\n"
     "                                          default and documentation\n"
     "       hyperelastic --help\n"
@@ -53,6 +57,9 @@ main(int argc, char *argv[])
         }
       return success;
     }
+  if (argc == 3 && std::string(argv[1]) == "--fit")
+    return run_and_report(
+      [&]() { calibration::run_fit(argv[2], comm); }, comm);
   const bool        restart = argc == 4 && std::string(argv[1]) == "--restart";
   const std::string scene   = restart ? argv[3] : argument;
   if (!(argc == 2 || restart) || scene.empty() || scene[0] == '-')

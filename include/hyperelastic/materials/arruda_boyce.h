@@ -145,6 +145,23 @@ namespace hyperelastic
         }
       return true;
     }
+
+    /// dW'/dmu = sum i c_i lm^(2-2i) Ib^(i-1) and dW'/dlm = mu sum i c_i
+    /// (2 - 2i) lm^(1-2i) Ib^(i-1).
+    static std::vector<double>
+    constant_derivatives(const Constants &constants, const double Ib)
+    {
+      const double inverse_lm2 = 1. / (constants.lm * constants.lm);
+      double       scale = 1., power_1 = 1., d_mu = 0., d_lm = 0.;
+      for (unsigned int i = 1; i <= 5; ++i)
+        {
+          d_mu += scale * c[i - 1] * i * power_1;
+          d_lm += (2. - 2. * i) * scale / constants.lm * c[i - 1] * i * power_1;
+          scale *= inverse_lm2;
+          power_1 *= Ib;
+        }
+      return {d_mu, constants.mu * d_lm};
+    }
   };
 
   template <int dim>

@@ -36,9 +36,15 @@
 //                       (declare, parse, entries) and from_small_strain;
 //   name(), documentation();
 //   evaluate(constants, Ib, W, W1, W2)  W, W', W'' at Ib; returns false where
-//                       the law is undefined (Gent at or beyond locking).
+//                       the law is undefined (Gent at or beyond locking);
+//   constant_derivatives(constants, Ib)  dW'/dc at Ib for each entry of
+//                       Constants::entries() but the last (Bulk modulus).
+// The stress derivatives with respect to the constants (calibration,
+// constant_derivatives.h) follow from P: dP/dc = dW'/dc D for the law's
+// constants, dP/dkappa = 1/2 (J^2 - 1) G.
 #pragma once
 
+#include <hyperelastic/materials/constant_derivatives.h>
 #include <hyperelastic/materials/evaluated_material.h>
 #include <hyperelastic/materials/volumetric_split.h>
 
@@ -46,11 +52,13 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace hyperelastic
 {
   template <int dim, typename Law>
-  class FirstInvariantModel : public EvaluatedMaterial<dim>
+  class FirstInvariantModel : public EvaluatedMaterial<dim>,
+                              public ConstantDerivatives<dim>
   {
   public:
     using Constants = typename Law::Constants;
@@ -120,6 +128,37 @@ namespace hyperelastic
     model_constants() const
     {
       return constants;
+    }
+
+    std::vector<std::string>
+    constant_names() const override
+    {
+      std::vector<std::string> names;
+      for (const auto &entry : constants.entries())
+        names.push_back(entry.first);
+      return names;
+    }
+
+    /// dW'/dc D per law constant, then 1/2 (J^2 - 1) G (the bulk modulus);
+    /// NaN where the model is undefined.
+    std::vector<Tensor<2, dim>>
+    stress_derivatives(const Tensor<2, dim> &F) const override
+    {
+      const double J  = determinant(F);
+      double       W  = 0., W1 = 0., W2 = 0.;
+      const double Ib = J > 0. ? isochoric_invariant(F, J) : 0.;
+      std::vector<Tensor<2, dim>> dP(constants.entries().size(),
+                                     Material<dim>::not_a_number_tensor());
+      if (!(J > 0.) || !Law::evaluate(constants, Ib, W, W1, W2))
+        return dP;
+      const Tensor<2, dim>      G   = transpose(invert(F));
+      const double              I1  = first_invariant(F);
+      const Tensor<2, dim>      D   = 2. * Ib / I1 * (F - I1 / 3. * G);
+      const std::vector<double> dW1 = Law::constant_derivatives(constants, Ib);
+      for (unsigned int k = 0; k < dW1.size(); ++k)
+        dP[k] = dW1[k] * D;
+      dP.back() = 0.5 * (J - 1.) * (J + 1.) * G;
+      return dP;
     }
 
   private:

@@ -119,6 +119,16 @@ namespace hyperelastic
       W2 = W1 / (c.jm * room);
       return true;
     }
+
+    /// dW'/dmu = 1 / (2 room), dW'/dJm = -mu x / (2 Jm^2 room^2), room = 1 -
+    /// x / Jm, x = Ib - 3 (inside the admissible range).
+    static std::vector<double>
+    constant_derivatives(const Constants &c, const double Ib)
+    {
+      const double x    = Ib - 3.;
+      const double room = 1. - x / c.jm;
+      return {0.5 / room, -0.5 * c.mu * x / (c.jm * c.jm * room * room)};
+    }
   };
 
   template <int dim>

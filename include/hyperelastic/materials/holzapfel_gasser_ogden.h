@@ -57,6 +57,14 @@ namespace hyperelastic
     {
       double mu    = 1.;
       double kappa = 2.;
+
+      /// The matrix's own constants by the names of the model's entries.
+      std::vector<std::pair<std::string, std::string>>
+      entries() const
+      {
+        return {{"Shear modulus", exact_entry_text(mu)},
+                {"Bulk modulus", exact_entry_text(kappa)}};
+      }
     };
 
     static std::string
@@ -83,6 +91,13 @@ namespace hyperelastic
       W1 = 0.5 * c.mu;
       W2 = 0.;
       return true;
+    }
+
+    /// dW'/dmu.
+    static std::vector<double>
+    constant_derivatives(const Constants &, const double)
+    {
+      return {0.5};
     }
   };
 

@@ -10,6 +10,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <hyperelastic/materials/constant_derivatives.h>
 #include <hyperelastic/materials/volumetric_split.h>
 
 #include <limits>
@@ -185,9 +186,13 @@ namespace hyperelastic
   /// the scene's shared elastic-constant entries (E and nu, Lame, or shear
   /// and bulk modulus): it stores the pair exactly as parsed, so that
   /// small_strain_moduli() returns it bit for bit, and creates the 3D twin.
+  /// Every such model's P is linear in (mu, lambda), so the derivatives
+  /// with respect to them are the stresses of the model with (1, 0) and
+  /// (0, 1) (constant_derivatives.h).
   /// @p Model is the derived class template (curiously recurring).
   template <int dim, template <int> class Model>
-  class LameBasedMaterial : public Material<dim>
+  class LameBasedMaterial : public Material<dim>,
+                            public ConstantDerivatives<dim>
   {
   public:
     /// The constants a model of this kind is built from.
@@ -210,6 +215,22 @@ namespace hyperelastic
     three_dimensional_twin() const override
     {
       return std::make_unique<Model<3>>(lame);
+    }
+
+    std::vector<std::string>
+    constant_names() const override
+    {
+      return {"mu", "lambda"};
+    }
+
+    std::vector<Tensor<2, dim>>
+    stress_derivatives(const Tensor<2, dim> &F) const override
+    {
+      LameParameters unit_mu, unit_lambda;
+      unit_mu.mu         = 1.;
+      unit_lambda.lambda = 1.;
+      return {Model<dim>(unit_mu).first_piola_kirchhoff(F),
+              Model<dim>(unit_lambda).first_piola_kirchhoff(F)};
     }
 
   protected:

@@ -55,6 +55,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/materials/constant_derivatives.h>
 #include <hyperelastic/materials/constant_entries.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/materials/volumetric_split.h>
@@ -167,7 +168,7 @@ namespace hyperelastic
   };
 
   template <int dim>
-  class MooneyRivlin : public Material<dim>
+  class MooneyRivlin : public Material<dim>, public ConstantDerivatives<dim>
   {
   public:
     using Constants = MooneyRivlinConstants;
@@ -209,6 +210,30 @@ namespace hyperelastic
     small_strain_moduli() const override
     {
       return constants.small_strain_moduli();
+    }
+
+    std::vector<std::string>
+    constant_names() const override
+    {
+      return {"C1", "C2", "Bulk modulus"};
+    }
+
+    /// P is linear in C1, C2 and kappa: each derivative is the stress with
+    /// that constant 1 and the others 0.
+    std::vector<Tensor<2, dim>>
+    stress_derivatives(const Tensor<2, dim> &F) const override
+    {
+      std::vector<Tensor<2, dim>> dP;
+      for (double MooneyRivlinConstants::*c : {&MooneyRivlinConstants::c1,
+                                               &MooneyRivlinConstants::c2,
+                                               &MooneyRivlinConstants::kappa})
+        {
+          MooneyRivlinConstants unit;
+          unit.c1 = unit.c2 = unit.kappa = 0.;
+          unit.*c                        = 1.;
+          dP.push_back(MooneyRivlin<dim>(unit).first_piola_kirchhoff(F));
+        }
+      return dP;
     }
 
     std::unique_ptr<Material<3>>

@@ -33,6 +33,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/materials/constant_derivatives.h>
 #include <hyperelastic/materials/constant_entries.h>
 #include <hyperelastic/materials/evaluated_material.h>
 #include <hyperelastic/materials/tangent_projection.h>
@@ -132,7 +133,7 @@ namespace hyperelastic
   };
 
   template <int dim>
-  class Ogden : public EvaluatedMaterial<dim>
+  class Ogden : public EvaluatedMaterial<dim>, public ConstantDerivatives<dim>
   {
   public:
     using Constants = OgdenConstants;
@@ -212,6 +213,74 @@ namespace hyperelastic
                    (std::pow(J, -constants.alpha[p] / 3.) * T - 3.);
           }
       return psi;
+    }
+
+    std::vector<std::string>
+    constant_names() const override
+    {
+      std::vector<std::string> names;
+      for (const auto &entry : constants.entries())
+        names.push_back(entry.first);
+      return names;
+    }
+
+    /// In the order mu1, alpha1, ..., alpha3, Bulk modulus. P is linear in
+    /// mu_p and kappa: the stress of the model with that constant 1 and the
+    /// other linear ones 0. With m = alpha_p / 2 and C = sum_i c_i n_i n_i^T,
+    /// S_p = mu_p a (C^(m-1) - T/3 C^-1), a = u^(-m/3), T = sum_i c_i^m:
+    ///   dS_p/dm = mu_p sum_i [da (c_i^(m-1) - T / (3 c_i))
+    ///                         + a (c_i^(m-1) ln c_i - dT / (3 c_i))] n_i n_i^T,
+    /// da = -ln(u)/3 a, dT = sum_i c_i^m ln c_i; dP/dalpha_p = 1/2 F dS_p/dm.
+    std::vector<Tensor<2, dim>>
+    stress_derivatives(const Tensor<2, dim> &F) const override
+    {
+      std::vector<Tensor<2, dim>> dP(7, Material<dim>::not_a_number_tensor());
+      const double                J = determinant(F);
+      if (!(J > 0.))
+        return dP;
+      const Matrix3  F3 = embed(F);
+      const Spectrum s  = spectrum(F3);
+      const double   log_u = 2. * std::log(J);
+      const auto     in_plane = [&](const Matrix3 &S) {
+        const Matrix3  P3 = F3 * S;
+        Tensor<2, dim> P;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            P[i][j] = P3[i][j];
+        return P;
+      };
+      for (unsigned int p = 0; p < 3; ++p)
+        {
+          OgdenConstants unit = constants;
+          unit.mu             = {{0., 0., 0.}};
+          unit.mu[p]          = 1.;
+          unit.kappa          = 0.;
+          dP[2 * p]           = Ogden<dim>(unit).first_piola_kirchhoff(F);
+          const double m      = 0.5 * constants.alpha[p];
+          const double a      = std::exp(-m / 3. * log_u);
+          double       T = 0., dT = 0.;
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              const double c_m = std::pow(s.values[i], m);
+              T += c_m;
+              dT += c_m * std::log(s.values[i]);
+            }
+          const double          da = -log_u / 3. * a;
+          std::array<double, 3> g;
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              const double c = s.values[i];
+              const double power = std::pow(c, m - 1.);
+              g[i] = da * (power - T / (3. * c)) +
+                     a * (power * std::log(c) - dT / (3. * c));
+            }
+          dP[2 * p + 1] = 0.5 * constants.mu[p] * in_plane(function_of(s, g));
+        }
+      OgdenConstants volumetric = constants;
+      volumetric.mu             = {{0., 0., 0.}};
+      volumetric.kappa          = 1.;
+      dP[6] = Ogden<dim>(volumetric).first_piola_kirchhoff(F);
+      return dP;
     }
 
   private:

@@ -129,6 +129,14 @@ namespace hyperelastic
       W2             = 6. * c.c30 * x + 2. * c.c20;
       return true;
     }
+
+    /// dW'/dC10, dW'/dC20, dW'/dC30 at Ib.
+    static std::vector<double>
+    constant_derivatives(const Constants &, const double Ib)
+    {
+      const double x = Ib - 3.;
+      return {1., 2. * x, 3. * x * x};
+    }
   };
 
   template <int dim>

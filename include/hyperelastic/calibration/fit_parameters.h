@@ -1,0 +1,46 @@
+// The parameter file of 'hyperelastic --fit': the scene's Material
+// subsection (the model, the starting constants, the fixed ones), Output's
+// Directory and Base name, and the subsection Fit:
+//   Free constants     entries of the model (default: all but the
+//                      volumetric one; calibration/model_constants.h)
+//   Incompressible     true: the tests are fitted with J = 1
+//   Starts             how many starts the multi-start fit makes
+//   Stability range    the stretches over which Drucker stability is checked
+//   subsection Data k  (k = 1 ... 8) Test, File, Weight: one test each
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <hyperelastic/calibration/test_data.h>
+
+#include <string>
+#include <vector>
+
+namespace hyperelastic
+{
+  namespace calibration
+  {
+    struct FitParameters
+    {
+      static constexpr unsigned int max_data_sets = 8;
+
+      std::vector<std::string> free_constants;
+      bool                     incompressible = true;
+      unsigned int             starts         = 8;
+      double                   stability_lowest  = 0.1;
+      double                   stability_highest = 10.;
+      std::vector<TestData>    data;
+      std::string              directory, base_name;
+
+      /// Declares Material, Output (Directory, Base name) and Fit.
+      static void
+      declare(dealii::ParameterHandler &prm);
+
+      /// Reads Fit and Output, and every Data k's file (relative paths are
+      /// relative to @p folder, the parameter file's). InputErrors name the
+      /// entry or the data file and line.
+      void
+      parse(dealii::ParameterHandler &prm, const std::string &folder);
+    };
+  } // namespace calibration
+} // namespace hyperelastic

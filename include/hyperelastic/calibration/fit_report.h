@@ -1,0 +1,65 @@
+// What a fit reports: the constants with their standard errors, RMS and R^2
+// per test and overall, the Drucker verdict per mode; the files
+// <Base name>_material.prm (a Material block ready to include in a scene,
+// with this summary as its header) and <Base name>_fit.csv (one row per
+// measured value: data, test, stretch_1, stretch_2, measured, fitted,
+// component). scripts/plot_fit.py draws the CSV.
+#pragma once
+
+#include <hyperelastic/calibration/drucker_stability.h>
+#include <hyperelastic/calibration/material_fit.h>
+#include <hyperelastic/calibration/model_constants.h>
+#include <hyperelastic/calibration/test_data.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace hyperelastic
+{
+  namespace calibration
+  {
+    /// RMS of the (unweighted) residuals and R^2 = 1 - SS_res / SS_tot.
+    struct GoodnessOfFit
+    {
+      double rms       = 0.;
+      double r_squared = 0.;
+    };
+
+    GoodnessOfFit
+    goodness_of_fit(const std::vector<double> &measured,
+                    const std::vector<double> &fitted);
+
+    struct FitReport
+    {
+      std::string                      model;
+      std::vector<std::string>         names;
+      FitResult                        result;
+      std::vector<TestData>            data;
+      std::vector<std::vector<double>> fitted;     ///< per test, per value
+      std::vector<std::vector<double>> stretch_2;  ///< per test, per value
+      std::vector<StabilityVerdict>    stability;
+      bool                             incompressible = true;
+      double                           seconds        = 0.;
+
+      /// The summary, one line each (no trailing newline).
+      std::vector<std::string>
+      summary() const;
+
+      /// True if every mode is Drucker stable over the range.
+      bool
+      stable() const;
+    };
+
+    /// <Base name>_fit.csv.
+    void
+    write_fit_csv(std::ostream &out, const FitReport &report);
+
+    /// <Base name>_material.prm: the summary as '#' comments, then the
+    /// Material block.
+    void
+    write_material_file(std::ostream         &out,
+                        const FitReport      &report,
+                        const ModelConstants &constants);
+  } // namespace calibration
+} // namespace hyperelastic

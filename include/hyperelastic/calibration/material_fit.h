@@ -1,0 +1,43 @@
+// The fit of a model's constants to homogeneous test data: minimises
+//   1/2 sum_tests w_t sum_points (N_model(state; c) - N_measured)^2
+// (absolute nominal-stress residuals) over the free entries c by
+// Levenberg-Marquardt with exact derivatives (the model's
+// ConstantDerivatives through calibration/homogeneous_test.h), from the
+// parameter file's values and Starts - 1 more starts scattered around them
+// (each free value times a factor in [1/3, 3], the same on every rank). The
+// model's own checks bound the constants: a rejected value is a rejected
+// step.
+#pragma once
+
+#include <hyperelastic/calibration/model_constants.h>
+#include <hyperelastic/calibration/test_data.h>
+
+#include <vector>
+
+namespace hyperelastic
+{
+  namespace calibration
+  {
+    struct FitResult
+    {
+      std::vector<double> values;          ///< the free entries
+      std::vector<double> standard_errors; ///< from (J^T J)^-1 s^2
+      double              cost = 0.;       ///< 1/2 the weighted squares
+      unsigned int        starts_converged = 0;
+      unsigned int        iterations       = 0; ///< over all starts
+    };
+
+    FitResult
+    fit_material(const ModelConstants        &constants,
+                 const std::vector<TestData> &data,
+                 bool                         incompressible,
+                 unsigned int                 starts);
+
+    /// The model's value at every state of every test (NaN where it is
+    /// undefined).
+    std::vector<std::vector<double>>
+    model_values(const Material<3>           &material,
+                 const std::vector<TestData> &data,
+                 bool                         incompressible);
+  } // namespace calibration
+} // namespace hyperelastic

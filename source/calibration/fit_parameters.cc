@@ -1,0 +1,147 @@
+// The fit's parameter file (see the header).
+#include <deal.II/base/utilities.h>
+
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/calibration/fit_parameters.h>
+#include <hyperelastic/materials/material_parameters.h>
+
+namespace hyperelastic
+{
+  namespace calibration
+  {
+    using namespace entry_patterns;
+
+    void
+    FitParameters::declare(dealii::ParameterHandler &prm)
+    {
+      MaterialParameters::declare(prm);
+      prm.enter_subsection("Output");
+      prm.declare_entry("Directory",
+                        "output",
+                        Anything(),
+                        "Folder of <Base name>_material.prm and "
+                        "<Base name>_fit.csv (created if missing).");
+      prm.declare_entry("Base name",
+                        "fit",
+                        Anything(),
+                        "Prefix of the files the fit writes.");
+      prm.leave_subsection();
+      prm.enter_subsection("Fit");
+      prm.declare_entry(
+        "Free constants",
+        "",
+        List(Anything()),
+        "The entries the fit varies, by their scene names: those of the "
+        "model's own subsection (Ogden: mu1, alpha1, ...), or for the "
+        "Lame-based models the pair 'Elastic constants' selects (Young's "
+        "modulus, Poisson's ratio | Shear modulus, Lame lambda | Shear "
+        "modulus, Bulk modulus). Empty: all of the model's constants but the "
+        "volumetric one (Bulk modulus, Lame lambda or Poisson's ratio). The "
+        "others keep the values of the Material subsection.");
+      prm.declare_entry("Incompressible",
+                        "true",
+                        Bool(),
+                        "true: the tests are fitted with J = 1 (a pressure "
+                        "frees the lateral faces); the volumetric constant "
+                        "cannot be free. false: the lateral stretches are "
+                        "solved so that the free faces carry no stress, and "
+                        "the bulk modulus takes part.");
+      prm.declare_entry("Starts",
+                        "8",
+                        Integer(1, 1000),
+                        "Levenberg-Marquardt runs: from the Material "
+                        "subsection's values and from Starts - 1 points "
+                        "around them (each free value times a factor in "
+                        "[1/3, 3]); the best is kept.");
+      prm.declare_entry("Stability range",
+                        "0.1, 10",
+                        Anything(),
+                        "Lowest and highest stretch (lowest < 1 < highest) "
+                        "over which Drucker stability is checked along the "
+                        "uniaxial, equibiaxial and planar paths.");
+      for (unsigned int k = 1; k <= max_data_sets; ++k)
+        {
+          prm.enter_subsection("Data " + std::to_string(k));
+          prm.declare_entry("Test",
+                            "uniaxial",
+                            Selection(test_type_names()),
+                            "The test of this file: uniaxial, equibiaxial "
+                            "and planar: columns stretch, nominal_stress; "
+                            "biaxial: stretch_1, stretch_2, "
+                            "nominal_stress_1, nominal_stress_2; simple "
+                            "shear: shear, nominal_shear_stress; "
+                            "volumetric: J, pressure (minus the mean Cauchy "
+                            "stress; Incompressible = false only).");
+          prm.declare_entry("File",
+                            "",
+                            Anything(),
+                            "CSV file with a header row naming the columns; "
+                            "lines starting with # are comments. Empty: no "
+                            "such data set.");
+          prm.declare_entry("Weight",
+                            "1",
+                            Double(0.),
+                            "Factor of this test's squared residuals.");
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+    }
+
+    void
+    FitParameters::parse(dealii::ParameterHandler &prm,
+                         const std::string        &folder)
+    {
+      prm.enter_subsection("Output");
+      directory = dealii::Utilities::trim(prm.get("Directory"));
+      base_name = dealii::Utilities::trim(prm.get("Base name"));
+      prm.leave_subsection();
+      if (directory.empty())
+        reject("Output/Directory", "", "must not be empty");
+      if (base_name.empty() || base_name.find('/') != std::string::npos)
+        reject("Output/Base name", base_name, "must be a non-empty file name");
+
+      prm.enter_subsection("Fit");
+      free_constants.clear();
+      for (const std::string &name :
+           dealii::Utilities::split_string_list(prm.get("Free constants")))
+        if (!dealii::Utilities::trim(name).empty())
+          free_constants.push_back(dealii::Utilities::trim(name));
+      incompressible = prm.get_bool("Incompressible");
+      starts         = prm.get_integer("Starts");
+      const std::vector<double> range =
+        parse_coordinates(prm.get("Stability range"));
+      if (range.size() != 2 || !(range[0] > 0.) || !(range[0] < 1.) ||
+          !(range[1] > 1.))
+        reject("Fit/Stability range",
+               prm.get("Stability range"),
+               "must be two stretches 'lowest, highest' with 0 < lowest < 1 "
+               "< highest");
+      stability_lowest  = range[0];
+      stability_highest = range[1];
+      data.clear();
+      for (unsigned int k = 1; k <= max_data_sets; ++k)
+        {
+          prm.enter_subsection("Data " + std::to_string(k));
+          const std::string file = dealii::Utilities::trim(prm.get("File"));
+          if (!file.empty())
+            {
+              const TestType type = test_type(prm.get("Test"));
+              if (type == TestType::volumetric && incompressible)
+                reject("Fit/Data " + std::to_string(k) + "/Test",
+                       prm.get("Test"),
+                       "a volumetric test needs Fit/Incompressible = false");
+              TestData test = read_test_data(
+                file[0] == '/' ? file : folder + "/" + file, type);
+              test.index  = k;
+              test.weight = prm.get_double("Weight");
+              data.push_back(test);
+            }
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+      if (data.empty())
+        reject("Fit/Data 1/File", "", "a fit needs at least one data file");
+    }
+  } // namespace calibration
+} // namespace hyperelastic

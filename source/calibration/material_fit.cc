@@ -1,0 +1,148 @@
+// The least-squares fit of a model to test data (see the header).
+#include <deal.II/lac/full_matrix.h>
+
+#include <hyperelastic/calibration/levenberg_marquardt.h>
+#include <hyperelastic/calibration/material_fit.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace hyperelastic
+{
+  namespace calibration
+  {
+    namespace
+    {
+      /// r and J of the weighted residuals at @p values; false if the model
+      /// rejects them or is undefined at a data point.
+      bool
+      residuals(const ModelConstants             &constants,
+                const std::vector<TestData>      &data,
+                const bool                        incompressible,
+                const std::vector<double>        &values,
+                std::vector<double>              &r,
+                std::vector<std::vector<double>> &J)
+      {
+        std::vector<std::vector<double>> chain;
+        const auto material = constants.material_and_chain(values, chain);
+        if (!material)
+          return false;
+        const auto *derivatives =
+          dynamic_cast<const ConstantDerivatives<3> *>(material.get());
+        r.clear();
+        J.clear();
+        for (const TestData &test : data)
+          {
+            const double root_weight = std::sqrt(test.weight);
+            for (unsigned int i = 0; i < test.states.size(); ++i)
+              {
+                const Response response = homogeneous_response(
+                  *material, derivatives, test.states[i], incompressible);
+                if (!std::isfinite(response.value))
+                  return false;
+                r.push_back(root_weight * (response.value - test.measured[i]));
+                std::vector<double> row(values.size(), 0.);
+                for (unsigned int m = 0; m < chain.size(); ++m)
+                  for (unsigned int k = 0; k < values.size(); ++k)
+                    row[k] += root_weight * response.derivatives[m] * chain[m][k];
+                J.push_back(row);
+              }
+          }
+        return true;
+      }
+
+      /// sqrt of the diagonal of (J^T J)^-1 times the residual variance.
+      std::vector<double>
+      standard_errors(const std::vector<double>              &r,
+                      const std::vector<std::vector<double>> &J)
+      {
+        const unsigned int n = J.empty() ? 0 : J[0].size();
+        std::vector<double> errors(n, std::nan(""));
+        if (r.size() <= n)
+          return errors;
+        dealii::FullMatrix<double> M(n, n);
+        double                     squares = 0.;
+        for (unsigned int k = 0; k < r.size(); ++k)
+          {
+            squares += r[k] * r[k];
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j < n; ++j)
+                M(i, j) += J[k][i] * J[k][j];
+          }
+        try
+          {
+            M.gauss_jordan();
+          }
+        catch (...)
+          {
+            return errors;
+          }
+        const double variance = squares / (r.size() - n);
+        for (unsigned int i = 0; i < n; ++i)
+          errors[i] = std::sqrt(std::max(M(i, i), 0.) * variance);
+        return errors;
+      }
+    } // namespace
+
+    FitResult
+    fit_material(const ModelConstants        &constants,
+                 const std::vector<TestData> &data,
+                 const bool                   incompressible,
+                 const unsigned int           starts)
+    {
+      LeastSquaresProblem problem;
+      problem.evaluate = [&](const std::vector<double>        &x,
+                             std::vector<double>              &r,
+                             std::vector<std::vector<double>> &J) {
+        return residuals(constants, data, incompressible, x, r, J);
+      };
+      const std::vector<double>              origin = constants.start();
+      std::mt19937                           random(2026);
+      std::uniform_real_distribution<double> exponent(-std::log(3.),
+                                                      std::log(3.));
+      FitResult best;
+      best.cost = std::numeric_limits<double>::infinity();
+      for (unsigned int s = 0; s < std::max(starts, 1u); ++s)
+        {
+          std::vector<double> start = origin;
+          if (s > 0)
+            for (double &value : start)
+              value *= std::exp(exponent(random));
+          const LeastSquaresResult result =
+            levenberg_marquardt(problem, start);
+          best.iterations += result.iterations;
+          best.starts_converged += result.converged ? 1 : 0;
+          if (result.cost < best.cost)
+            {
+              best.cost   = result.cost;
+              best.values = result.x;
+            }
+        }
+      if (!std::isfinite(best.cost))
+        return best;
+      std::vector<double>              r;
+      std::vector<std::vector<double>> J;
+      residuals(constants, data, incompressible, best.values, r, J);
+      best.standard_errors = standard_errors(r, J);
+      return best;
+    }
+
+    std::vector<std::vector<double>>
+    model_values(const Material<3>           &material,
+                 const std::vector<TestData> &data,
+                 const bool                   incompressible)
+    {
+      std::vector<std::vector<double>> values;
+      for (const TestData &test : data)
+        {
+          values.emplace_back();
+          for (const TestState &state : test.states)
+            values.back().push_back(
+              homogeneous_response(material, nullptr, state, incompressible)
+                .value);
+        }
+      return values;
+    }
+  } // namespace calibration
+} // namespace hyperelastic

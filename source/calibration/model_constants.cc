@@ -1,0 +1,286 @@
+// The free constants of a fit as scene entries (see the header).
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/base/parameter_tools.h>
+#include <hyperelastic/calibration/model_constants.h>
+#include <hyperelastic/materials/constant_entries.h>
+#include <hyperelastic/materials/material_parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace hyperelastic
+{
+  namespace calibration
+  {
+    namespace
+    {
+      std::string
+      listed(const std::vector<std::string> &names)
+      {
+        std::string text;
+        for (const std::string &name : names)
+          text += (text.empty() ? "" : ", ") + name;
+        return text;
+      }
+
+      bool
+      contains(const std::vector<std::string> &names, const std::string &name)
+      {
+        return std::find(names.begin(), names.end(), name) != names.end();
+      }
+
+      /// The parsed material of the handler; InputError if it is invalid.
+      MaterialParameters
+      parsed(dealii::ParameterHandler &prm)
+      {
+        MaterialParameters material;
+        material.parse(prm);
+        return material;
+      }
+    } // namespace
+
+    ModelConstants::ModelConstants(dealii::ParameterHandler       &prm,
+                                   const std::vector<std::string> &free_names,
+                                   const bool incompressible)
+    {
+      std::ostringstream text;
+      prm.print_parameters(text, dealii::ParameterHandler::PRM);
+      file_text = text.str();
+      const MaterialParameters material = parsed(prm);
+      model_name                        = material.model;
+      if (material.stiffness_warping)
+        reject("Material/Model", model_name, "is not a model of P(F): it "
+               "cannot be fitted");
+      if (material.viscoelasticity.active())
+        reject("Material/Viscoelasticity/Weights",
+               material.viscoelasticity.weights_text,
+               "fitting viscoelastic constants is not available yet: fit "
+               "the hyperelastic (long-time) response without "
+               "viscoelasticity");
+      const auto model    = material.factory.create<3>();
+      const auto derivate = dynamic_cast<const ConstantDerivatives<3> *>(
+        model.get());
+      if (!derivate)
+        reject("Material/Model", model_name, "does not give the derivatives "
+               "of its stress with respect to its constants, so it cannot be "
+               "fitted");
+      if (material_model(model_name).uses_elastic_constants)
+        {
+          prm.enter_subsection("Material");
+          pair = prm.get("Elastic constants");
+          prm.leave_subsection();
+          all_entries = pair == "Lame" ?
+                          std::vector<std::string>{"Shear modulus",
+                                                   "Lame lambda"} :
+                        pair == "shear and bulk modulus" ?
+                          std::vector<std::string>{"Shear modulus",
+                                                   "Bulk modulus"} :
+                          std::vector<std::string>{"Young's modulus",
+                                                   "Poisson's ratio"};
+          volumetric_entry = all_entries[1];
+        }
+      else
+        {
+          all_entries      = derivate->constant_names();
+          volumetric_entry = "Bulk modulus";
+        }
+      for (const std::string &name : free_names)
+        {
+          if (!contains(all_entries, name))
+            reject("Fit/Free constants", name, "is not a constant of the " +
+                   model_name + " model" + (pair.empty() ? "" :
+                   " with 'Elastic constants = " + pair + "'") +
+                   "; its constants are " + listed(all_entries));
+          if (incompressible && name == volumetric_entry)
+            reject("Fit/Free constants", name, "is the volumetric constant, "
+                   "which cannot be free with Fit/Incompressible = true");
+          if (contains(free, name))
+            reject("Fit/Free constants", name, "is named twice");
+          free.push_back(name);
+        }
+      if (free.empty())
+        for (const std::string &name : all_entries)
+          if (name != volumetric_entry)
+            free.push_back(name);
+      // An exactly incompressible material ('inf', nu = 0.5): J = 1 leaves
+      // its volumetric constant idle, but inf * 0 would be NaN, so a finite
+      // stand-in is parsed instead (the written block keeps the file's text).
+      volumetric_text = get(prm, volumetric_entry);
+      if (std::isinf(model->small_strain_moduli().lambda))
+        {
+          if (!incompressible)
+            reject("Material/" + (pair.empty() ? model_name + "/" :
+                                                 std::string()) +
+                     volumetric_entry,
+                   volumetric_text,
+                   "an incompressible material needs Fit/Incompressible = "
+                   "true");
+          volumetric_stand_in =
+            volumetric_entry == "Poisson's ratio" ? "0.3" : "1";
+        }
+    }
+
+    const std::vector<std::string> &
+    ModelConstants::names() const
+    {
+      return free;
+    }
+
+    const std::string &
+    ModelConstants::model() const
+    {
+      return model_name;
+    }
+
+    std::string
+    ModelConstants::get(dealii::ParameterHandler &prm,
+                        const std::string        &entry) const
+    {
+      prm.enter_subsection("Material");
+      if (pair.empty())
+        prm.enter_subsection(model_name);
+      const std::string value = prm.get(entry);
+      if (pair.empty())
+        prm.leave_subsection();
+      prm.leave_subsection();
+      return value;
+    }
+
+    std::vector<double>
+    ModelConstants::start() const
+    {
+      const auto          prm = handler({});
+      std::vector<double> values;
+      for (const std::string &name : free)
+        values.push_back(std::stod(get(*prm, name)));
+      return values;
+    }
+
+    std::unique_ptr<dealii::ParameterHandler>
+    ModelConstants::handler(const std::vector<double> &values) const
+    {
+      auto prm = std::make_unique<dealii::ParameterHandler>();
+      MaterialParameters::declare(*prm);
+      prm->parse_input_from_string(file_text, "", true);
+      prm->enter_subsection("Material");
+      if (pair.empty())
+        prm->enter_subsection(model_name);
+      for (unsigned int k = 0; k < values.size(); ++k)
+        prm->set(free[k], exact_entry_text(values[k]));
+      if (!volumetric_stand_in.empty())
+        prm->set(volumetric_entry, volumetric_stand_in);
+      if (pair.empty())
+        prm->leave_subsection();
+      prm->leave_subsection();
+      return prm;
+    }
+
+    std::unique_ptr<Material<3>>
+    ModelConstants::material(const std::vector<double> &values) const
+    {
+      try
+        {
+          return parsed(*handler(values)).factory.create<3>();
+        }
+      catch (const InputError &)
+        {
+          return nullptr;
+        }
+    }
+
+    std::vector<std::vector<double>>
+    ModelConstants::chain(const std::vector<double> &values) const
+    {
+      return chain(*handler(values));
+    }
+
+    std::unique_ptr<Material<3>>
+    ModelConstants::material_and_chain(const std::vector<double>        &values,
+                                       std::vector<std::vector<double>> &d) const
+    {
+      const auto prm = handler(values);
+      try
+        {
+          auto material = parsed(*prm).factory.create<3>();
+          d             = chain(*prm);
+          return material;
+        }
+      catch (const InputError &)
+        {
+          return nullptr;
+        }
+    }
+
+    std::vector<std::vector<double>>
+    ModelConstants::chain(dealii::ParameterHandler &prm) const
+    {
+      if (pair.empty())
+        {
+          std::vector<std::vector<double>> d(all_entries.size(),
+                                             std::vector<double>(free.size()));
+          for (unsigned int i = 0; i < all_entries.size(); ++i)
+            for (unsigned int k = 0; k < free.size(); ++k)
+              d[i][k] = all_entries[i] == free[k] ? 1. : 0.;
+          return d;
+        }
+      // Rows mu, lambda.
+      std::vector<std::vector<double>> d(2, std::vector<double>(free.size()));
+      const bool   engineering = all_entries[0] == "Young's modulus";
+      const double E = engineering ? std::stod(get(prm, all_entries[0])) : 0.;
+      const double nu =
+        engineering ? std::stod(get(prm, all_entries[1])) : 0.;
+      for (unsigned int k = 0; k < free.size(); ++k)
+        {
+          const std::string &name = free[k];
+          if (name == "Young's modulus")
+            {
+              d[0][k] = 0.5 / (1. + nu);
+              d[1][k] = nu / ((1. + nu) * (1. - 2. * nu));
+            }
+          else if (name == "Poisson's ratio")
+            {
+              const double q = (1. + nu) * (1. - 2. * nu);
+              d[0][k]        = -0.5 * E / ((1. + nu) * (1. + nu));
+              d[1][k]        = E * (1. + 2. * nu * nu) / (q * q);
+            }
+          else if (name == "Shear modulus")
+            {
+              d[0][k] = 1.;
+              d[1][k] = pair == "Lame" ? 0. : -2. / 3.;
+            }
+          else // Lame lambda or Bulk modulus
+            d[1][k] = 1.;
+        }
+      return d;
+    }
+
+    void
+    ModelConstants::write_material_block(std::ostream              &out,
+                                         const std::vector<double> &values) const
+    {
+      const auto prm   = handler(values);
+      const auto value = [&](const std::string &entry) {
+        return entry == volumetric_entry && !volumetric_stand_in.empty() ?
+                 volumetric_text :
+                 get(*prm, entry);
+      };
+      out << "subsection Material\n"
+          << "  set Model = " << model_name << "\n";
+      if (!pair.empty())
+        {
+          out << "  set Elastic constants = " << pair << "\n";
+          for (const std::string &entry : all_entries)
+            out << "  set " << entry << " = " << value(entry) << "\n";
+        }
+      else
+        {
+          out << "  subsection " << model_name << "\n";
+          for (const std::string &entry : all_entries)
+            out << "    set " << entry << " = " << value(entry) << "\n";
+          out << "  end\n";
+        }
+      out << "end\n";
+    }
+  } // namespace calibration
+} // namespace hyperelastic

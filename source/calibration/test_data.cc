@@ -1,0 +1,157 @@
+// Reading a test's CSV file (see the header).
+#include <deal.II/base/utilities.h>
+
+#include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/calibration/test_data.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+namespace hyperelastic
+{
+  namespace calibration
+  {
+    namespace
+    {
+      std::string
+      joined(const std::vector<std::string> &names)
+      {
+        std::string text;
+        for (const std::string &name : names)
+          text += (text.empty() ? "" : ", ") + name;
+        return text;
+      }
+
+      std::vector<std::string>
+      split_row(const std::string &line)
+      {
+        std::vector<std::string> fields;
+        for (const std::string &field :
+             dealii::Utilities::split_string_list(line, ','))
+          fields.push_back(dealii::Utilities::trim(field));
+        return fields;
+      }
+
+      double
+      number(const std::string &text, const std::string &where)
+      {
+        std::size_t used  = 0;
+        double      value = 0.;
+        try
+          {
+            value = std::stod(text, &used);
+          }
+        catch (...)
+          {
+            used = 0;
+          }
+        if (used == 0 || used != text.size() || !std::isfinite(value))
+          throw InputError(where + ": '" + text + "' is not a finite number");
+        return value;
+      }
+
+      /// The states and measured values of one data row.
+      void
+      add_row(TestData &data, const std::vector<double> &v,
+              const std::string &where)
+      {
+        const bool shear = data.type == TestType::simple_shear;
+        if (!shear && !(v[0] > 0.))
+          throw InputError(where + ": " + required_columns(data.type)[0] +
+                           " must be positive");
+        TestState state;
+        state.type      = data.type;
+        state.stretch_1 = v[0];
+        if (data.type == TestType::biaxial)
+          {
+            if (!(v[1] > 0.))
+              throw InputError(where + ": stretch_2 must be positive");
+            state.stretch_2 = v[1];
+            for (unsigned int c = 0; c < 2; ++c)
+              {
+                state.component = c;
+                data.states.push_back(state);
+                data.measured.push_back(v[2 + c]);
+              }
+            return;
+          }
+        data.states.push_back(state);
+        data.measured.push_back(v[1]);
+      }
+    } // namespace
+
+    std::vector<std::string>
+    required_columns(const TestType type)
+    {
+      switch (type)
+        {
+          case TestType::biaxial:
+            return {"stretch_1",
+                    "stretch_2",
+                    "nominal_stress_1",
+                    "nominal_stress_2"};
+          case TestType::simple_shear:
+            return {"shear", "nominal_shear_stress"};
+          case TestType::volumetric:
+            return {"J", "pressure"};
+          default:
+            return {"stretch", "nominal_stress"};
+        }
+    }
+
+    TestData
+    read_test_data(const std::string &file, const TestType type)
+    {
+      std::ifstream in(file);
+      if (!in)
+        throw InputError("cannot open test data file '" + file + "'");
+      TestData data;
+      data.type = type;
+      data.file = file;
+      const std::vector<std::string> wanted = required_columns(type);
+      std::vector<unsigned int>      column;
+      std::string                    line;
+      for (unsigned int number_of_line = 1; std::getline(in, line);
+           ++number_of_line)
+        {
+          const std::string text = dealii::Utilities::trim(line);
+          if (text.empty() || text[0] == '#')
+            continue;
+          const std::string where =
+            "test data file '" + file + "' line " +
+            std::to_string(number_of_line);
+          const std::vector<std::string> fields = split_row(text);
+          if (column.empty())
+            {
+              for (const std::string &name : wanted)
+                {
+                  const auto found =
+                    std::find(fields.begin(), fields.end(), name);
+                  if (found == fields.end())
+                    throw InputError(where + ": the header has no column '" +
+                                     name + "' (a " + test_type_name(type) +
+                                     " test needs the columns " +
+                                     joined(wanted) +
+                                     ")");
+                  column.push_back(found - fields.begin());
+                }
+              continue;
+            }
+          std::vector<double> values;
+          for (const unsigned int c : column)
+            {
+              if (c >= fields.size())
+                throw InputError(where + ": " + std::to_string(fields.size()) +
+                                 " values, the header has more columns");
+              values.push_back(number(fields[c], where));
+            }
+          add_row(data, values, where);
+        }
+      if (data.states.empty())
+        throw InputError("test data file '" + file + "' has no data rows" +
+                         (column.empty() ? " (and no header)" : ""));
+      return data;
+    }
+  } // namespace calibration
+} // namespace hyperelastic
