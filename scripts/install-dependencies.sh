@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs what hyperelastic needs from Debian 12's packages, skipping what is
-# already there: deal.II 9.4 (with Trilinos, METIS, MPI), CMake and a compiler.
+# already there: deal.II 9.4 (with Trilinos, METIS, MPI), CMake, a compiler
+# and matplotlib (the pictures of scripts/plot_fit.py and the benchmarks).
 set -euo pipefail
 
-packages=(libdeal.ii-dev cmake g++ make openmpi-bin)
+packages=(libdeal.ii-dev cmake g++ make openmpi-bin python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace hyperelastic
@@ -104,15 +105,28 @@ namespace hyperelastic
       dealii::ParameterHandler prm;
       FitParameters::declare(prm);
       read_parameter_file(fit_file, prm);
-      const auto  slash  = fit_file.rfind('/');
-      FitParameters parameters;
-      parameters.parse(prm,
-                       slash == std::string::npos ? "." :
-                                                    fit_file.substr(0, slash));
-      const ModelConstants constants(prm,
-                                     parameters.free_constants,
-                                     parameters.incompressible);
-      check_enough_data(parameters.data, constants);
+      const auto                      slash = fit_file.rfind('/');
+      FitParameters                   parameters;
+      std::unique_ptr<ModelConstants> fitted;
+      try
+        {
+          parameters.parse(prm,
+                           slash == std::string::npos ?
+                             "." :
+                             fit_file.substr(0, slash));
+          fitted = std::make_unique<ModelConstants>(prm,
+                                                    parameters.free_constants,
+                                                    parameters.incompressible);
+          check_enough_data(parameters.data, *fitted);
+        }
+      catch (const InputError &e)
+        {
+          const std::string what = e.what();
+          throw InputError(what.find("test data file") == 0 ?
+                             what :
+                             "fit file '" + fit_file + "': " + what);
+        }
+      const ModelConstants &constants = *fitted;
       if (!constants.material(constants.start()))
         throw InputError("fit file '" + fit_file +
                          "': the Material subsection's constants are not "
