@@ -5,8 +5,9 @@ measured values as points and the fitted model as a curve through them.
     python3 scripts/plot_fit.py OUTPUT/BASE_fit.csv [PICTURE.png]
 
 The picture defaults to the CSV's name with _fit.csv replaced by _fit.png.
-Columns read: data, test, stretch_1, stretch_2, measured, fitted, component
-(biaxial data sets draw one curve per stress and second stretch).
+Columns read: data, test, stretch_1, stretch_2, measured, fitted, component,
+time (biaxial data sets draw one curve per stress and second stretch,
+relaxation tests the stress against time).
 """
 import csv
 import math
@@ -18,7 +19,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-X_LABEL = {"simple shear": "shear g", "volumetric": "J"}
+X_LABEL = {"simple shear": "shear g", "volumetric": "J", "relaxation": "time"}
 Y_LABEL = {"simple shear": "nominal shear stress",
            "volumetric": "pressure (-mean Cauchy stress)"}
 
@@ -41,9 +42,11 @@ def curves(test, rows):
         if test == "biaxial":
             label = "P%s, stretch_2 = %.3g" % (row["component"],
                                               float(row["stretch_2"]))
+        if test == "relaxation":
+            label = "stretch %.3g" % float(row["stretch_1"])
+        x = float(row["time"] if test == "relaxation" else row["stretch_1"])
         groups.setdefault(label, []).append(
-            (float(row["stretch_1"]), float(row["measured"]),
-             float(row["fitted"])))
+            (x, float(row["measured"]), float(row["fitted"])))
     return [(label, sorted(points)) for label, points in groups.items()]
 
 

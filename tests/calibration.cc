@@ -212,8 +212,8 @@ namespace
     double                    worst  = 0.;
     for (const TestState &state : states_of(type))
       {
-        const auto material = constants.material(values);
-        const auto chain    = constants.chain(values);
+        std::vector<std::vector<double>> chain;
+        const auto material = constants.material_and_chain(values, chain);
         const auto response = homogeneous_response(
           *material,
           dynamic_cast<const ConstantDerivatives<3> *>(material.get()),
@@ -288,6 +288,62 @@ namespace
                                     std::abs(value));
     return worst;
   }
+
+  /// Yeoh with a two-term Prony series, the constants scaled by @p scale
+  /// (C10, C20, C30, beta_1, beta_2, tau_1, tau_2).
+  std::string
+  viscoelastic_block(const std::vector<double> &scale)
+  {
+    const std::vector<double> c = {0.5, -0.02, 0.003, 0.6, 0.3, 0.5, 20.};
+    std::ostringstream        out;
+    out.precision(17);
+    out << "subsection Material\n  set Model = Yeoh\n  subsection Yeoh\n"
+        << "    set C10 = " << c[0] * scale[0] << "\n"
+        << "    set C20 = " << c[1] * scale[1] << "\n"
+        << "    set C30 = " << c[2] * scale[2] << "\n"
+        << "    set Bulk modulus = 1000\n  end\n"
+        << "  subsection Viscoelasticity\n"
+        << "    set Weights = " << c[3] * scale[3] << ", " << c[4] * scale[4]
+        << "\n    set Relaxation times = " << c[5] * scale[5] << ", "
+        << c[6] * scale[6] << "\n  end\nend\n";
+    return out.str();
+  }
+
+  /// Relaxation data from the program's viscoelastic material point: a
+  /// uniaxial stretch @p stretch (J = 1) applied in one step of 1e-10 and
+  /// held, nominal stress P_xx - (l_y / l_x) P_yy at log-spaced times.
+  TestData
+  relaxation_data(const double stretch)
+  {
+    dealii::ParameterHandler prm;
+    parse_block(prm, viscoelastic_block(std::vector<double>(7, 1.)));
+    MaterialParameters material;
+    material.parse(prm);
+    const auto point =
+      material.factory.create<3>()->at_position(dealii::Point<3>());
+    Tensor<2, 3> F;
+    F[0][0] = stretch;
+    F[1][1] = F[2][2] = 1. / std::sqrt(stretch);
+    TestData data;
+    data.index = 2;
+    data.type  = TestType::relaxation;
+    double time = 0., dt = 1e-10;
+    for (unsigned int k = 0; k < 40; ++k)
+      {
+        point->begin_step(dt);
+        const Tensor<2, 3> P = point->first_piola_kirchhoff(F);
+        point->accept_step(F);
+        TestState state;
+        state.type      = TestType::relaxation;
+        state.stretch_1 = stretch;
+        state.time      = k == 0 ? 0. : time;
+        data.states.push_back(state);
+        data.measured.push_back(P[0][0] - F[1][1] / F[0][0] * P[1][1]);
+        dt = k == 0 ? 0.01 : 0.01 * std::pow(1.3, k);
+        time += dt;
+      }
+    return data;
+  }
 } // namespace
 
 int
@@ -357,9 +413,11 @@ main(int argc, char *argv[])
       MaterialParameters material;
       material.parse(written);
       const auto fitted = model_values(*constants.material(result.values),
+                                       {},
                                        data,
                                        c.incompressible);
       const auto again  = model_values(*material.factory.create<3>(),
+                                       {},
                                        data,
                                        c.incompressible);
       double     worst = 0., scale_of_data = 0.;
@@ -371,6 +429,56 @@ main(int argc, char *argv[])
               std::max(scale_of_data, std::abs(data[t].measured[i]));
           }
       check.at_most(c.model + " block", worst / scale_of_data, 1e-8);
+    }
+
+  check.section("relaxation: a two-term Prony series recovered from the "
+                "program's viscoelastic material point, start 30 % away "
+                "(relative, 1e-6)");
+  for (const bool with_model : {false, true})
+    {
+      // With the model: its constants too, from long-term uniaxial data.
+      std::vector<TestData> data = {relaxation_data(1.8)};
+      std::vector<double>   scale(7, 1.);
+      for (unsigned int k = with_model ? 0 : 3; k < 7; ++k)
+        scale[k] = k % 2 == 0 ? 1.3 : 0.7;
+      std::vector<std::string> free = {"Weights", "Relaxation times"};
+      if (with_model)
+        {
+          ModelCase yeoh{"Yeoh",
+                         "",
+                         {{"C10", 0.5},
+                          {"C20", -0.02},
+                          {"C30", 0.003},
+                          {"Bulk modulus", 1000.}},
+                         {"C10", "C20", "C30"},
+                         {TestType::uniaxial},
+                         true};
+          data.insert(data.begin(), generated_data(yeoh)[0]);
+          free.insert(free.begin(), {"C10", "C20", "C30"});
+        }
+      dealii::ParameterHandler prm;
+      parse_block(prm, viscoelastic_block(scale));
+      const ModelConstants constants(prm, free, true, true);
+      const FitResult      result = fit_material(constants, data, true, 4);
+      // The values: [C10, C20, C30,] beta_1, beta_2, tau_1, tau_2.
+      std::vector<double> exact = {0.6, 0.3, 0.5, 20.};
+      if (with_model)
+        exact.insert(exact.begin(), {0.5, -0.02, 0.003});
+      double worst = result.values.size() == exact.size() ? 0. : 1.;
+      for (unsigned int k = 0; k < exact.size() && k < result.values.size();
+           ++k)
+        worst = std::max(worst,
+                         std::abs(result.values[k] - exact[k]) /
+                           std::abs(exact[k]));
+      check.at_most(with_model ? "Yeoh constants and Prony series from "
+                                 "uniaxial + relaxation" :
+                                 "Prony series from relaxation at stretch 1.8",
+                    worst,
+                    1e-6);
+      std::ostringstream names;
+      for (const std::string &name : constants.names())
+        names << name << "; ";
+      check.note("values: " + names.str());
     }
 
   check.section("Drucker stability");

@@ -72,7 +72,12 @@ namespace hyperelastic
                             "nominal_stress_1, nominal_stress_2; simple "
                             "shear: shear, nominal_shear_stress; "
                             "volumetric: J, pressure (minus the mean Cauchy "
-                            "stress; Incompressible = false only).");
+                            "stress; Incompressible = false only); "
+                            "relaxation: time, nominal_stress of a uniaxial "
+                            "stretch held from time 0 (Incompressible = true "
+                            "only; fits the Prony series of "
+                            "Material/Viscoelasticity). The other tests are "
+                            "taken as the long-term (relaxed) response.");
           prm.declare_entry("File",
                             "",
                             Anything(),
@@ -83,6 +88,11 @@ namespace hyperelastic
                             "1",
                             Double(0.),
                             "Factor of this test's squared residuals.");
+          prm.declare_entry("Stretch",
+                            "1",
+                            Double(),
+                            "A relaxation test's held uniaxial stretch "
+                            "(positive, not 1).");
           prm.leave_subsection();
         }
       prm.leave_subsection();
@@ -127,12 +137,27 @@ namespace hyperelastic
           if (!file.empty())
             {
               const TestType type = test_type(prm.get("Test"));
+              const std::string section = "Fit/Data " + std::to_string(k);
               if (type == TestType::volumetric && incompressible)
-                reject("Fit/Data " + std::to_string(k) + "/Test",
+                reject(section + "/Test",
                        prm.get("Test"),
                        "a volumetric test needs Fit/Incompressible = false");
-              TestData test = read_test_data(
-                file[0] == '/' ? file : folder + "/" + file, type);
+              if (type == TestType::relaxation && !incompressible)
+                reject(section + "/Test",
+                       prm.get("Test"),
+                       "a relaxation test is fitted with J = 1: it needs "
+                       "Fit/Incompressible = true");
+              const double stretch = prm.get_double("Stretch");
+              if (type == TestType::relaxation &&
+                  (!(stretch > 0.) || stretch == 1.))
+                reject(section + "/Stretch",
+                       prm.get("Stretch"),
+                       "a relaxation test needs the held stretch (positive, "
+                       "not 1)");
+              TestData test =
+                read_test_data(file[0] == '/' ? file : folder + "/" + file,
+                               type,
+                               stretch);
               test.index  = k;
               test.weight = prm.get_double("Weight");
               data.push_back(test);

@@ -103,7 +103,7 @@ namespace hyperelastic
     void
     write_fit_csv(std::ostream &out, const FitReport &report)
     {
-      out << "data,test,stretch_1,stretch_2,measured,fitted,component\n"
+      out << "data,test,stretch_1,stretch_2,measured,fitted,component,time\n"
           << std::setprecision(17);
       for (unsigned int t = 0; t < report.data.size(); ++t)
         {
@@ -112,7 +112,8 @@ namespace hyperelastic
             out << test.index << "," << test_type_name(test.type) << ","
                 << test.states[i].stretch_1 << "," << report.stretch_2[t][i]
                 << "," << test.measured[i] << "," << report.fitted[t][i] << ","
-                << test.states[i].component + 1 << "\n";
+                << test.states[i].component + 1 << "," << test.states[i].time
+                << "\n";
         }
     }
 

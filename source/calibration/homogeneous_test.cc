@@ -12,13 +12,14 @@ namespace hyperelastic
   {
     namespace
     {
-      const std::array<std::pair<TestType, const char *>, 6> test_names = {
+      const std::array<std::pair<TestType, const char *>, 7> test_names = {
         {{TestType::uniaxial, "uniaxial"},
          {TestType::equibiaxial, "equibiaxial"},
          {TestType::planar, "planar"},
          {TestType::simple_shear, "simple shear"},
          {TestType::biaxial, "biaxial"},
-         {TestType::volumetric, "volumetric"}}};
+         {TestType::volumetric, "volumetric"},
+         {TestType::relaxation, "relaxation"}}};
 
       constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 
@@ -34,7 +35,8 @@ namespace hyperelastic
       StretchTest
       stretch_test(const TestState &state)
       {
-        if (state.type == TestType::uniaxial)
+        if (state.type == TestType::uniaxial ||
+            state.type == TestType::relaxation)
           return {0, 1, {{0., 1., 1.}}};
         return {state.component, 2, {{0., 0., 1.}}};
       }
@@ -47,6 +49,7 @@ namespace hyperelastic
         switch (state.type)
           {
             case TestType::uniaxial:
+            case TestType::relaxation:
               return {{l1, a, a}};
             case TestType::equibiaxial:
               return {{l1, l1, a}};
@@ -65,6 +68,7 @@ namespace hyperelastic
         switch (state.type)
           {
             case TestType::uniaxial:
+            case TestType::relaxation:
               return 1. / std::sqrt(l1);
             case TestType::equibiaxial:
               return 1. / (l1 * l1);

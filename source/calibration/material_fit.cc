@@ -30,6 +30,7 @@ namespace hyperelastic
           return false;
         const auto *derivatives =
           dynamic_cast<const ConstantDerivatives<3> *>(material.get());
+        const PronySeries series = constants.prony(values);
         r.clear();
         J.clear();
         for (const TestData &test : data)
@@ -37,15 +38,39 @@ namespace hyperelastic
             const double root_weight = std::sqrt(test.weight);
             for (unsigned int i = 0; i < test.states.size(); ++i)
               {
-                const Response response = homogeneous_response(
-                  *material, derivatives, test.states[i], incompressible);
+                const TestState &state    = test.states[i];
+                const Response   response = homogeneous_response(
+                  *material, derivatives, state, incompressible);
                 if (!std::isfinite(response.value))
                   return false;
-                r.push_back(root_weight * (response.value - test.measured[i]));
+                // A relaxation test: N(t) = N_eq (1 + sum_j beta_j
+                // exp(-t / tau_j)).
+                double              factor = 1.;
+                std::vector<double> decay(series.weights.size(), 0.);
+                if (state.type == TestType::relaxation)
+                  for (unsigned int j = 0; j < decay.size(); ++j)
+                    {
+                      decay[j] = std::exp(-state.time / series.times[j]);
+                      factor += series.weights[j] * decay[j];
+                    }
+                r.push_back(root_weight *
+                            (factor * response.value - test.measured[i]));
                 std::vector<double> row(values.size(), 0.);
                 for (unsigned int m = 0; m < chain.size(); ++m)
-                  for (unsigned int k = 0; k < values.size(); ++k)
-                    row[k] += root_weight * response.derivatives[m] * chain[m][k];
+                  for (unsigned int k = 0; k < chain[m].size(); ++k)
+                    row[k] += root_weight * factor * response.derivatives[m] *
+                              chain[m][k];
+                for (unsigned int j = 0; j < decay.size(); ++j)
+                  {
+                    const int w = constants.weight_columns()[j];
+                    const int t = constants.time_columns()[j];
+                    const double tau = series.times[j];
+                    if (w >= 0)
+                      row[w] += root_weight * decay[j] * response.value;
+                    if (t >= 0)
+                      row[t] += root_weight * series.weights[j] * decay[j] *
+                                state.time / (tau * tau) * response.value;
+                  }
                 J.push_back(row);
               }
           }
@@ -130,6 +155,7 @@ namespace hyperelastic
 
     std::vector<std::vector<double>>
     model_values(const Material<3>           &material,
+                 const PronySeries           &prony,
                  const std::vector<TestData> &data,
                  const bool                   incompressible)
     {
@@ -138,9 +164,17 @@ namespace hyperelastic
         {
           values.emplace_back();
           for (const TestState &state : test.states)
-            values.back().push_back(
-              homogeneous_response(material, nullptr, state, incompressible)
-                .value);
+            {
+              double factor = 1.;
+              if (state.type == TestType::relaxation)
+                for (unsigned int j = 0; j < prony.weights.size(); ++j)
+                  factor += prony.weights[j] *
+                            std::exp(-state.time / prony.times[j]);
+              values.back().push_back(
+                factor *
+                homogeneous_response(material, nullptr, state, incompressible)
+                  .value);
+            }
         }
       return values;
     }

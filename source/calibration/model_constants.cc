@@ -42,7 +42,8 @@ namespace hyperelastic
 
     ModelConstants::ModelConstants(dealii::ParameterHandler       &prm,
                                    const std::vector<std::string> &free_names,
-                                   const bool incompressible)
+                                   const bool incompressible,
+                                   const bool relaxation_data)
     {
       std::ostringstream text;
       prm.print_parameters(text, dealii::ParameterHandler::PRM);
@@ -52,24 +53,28 @@ namespace hyperelastic
       if (material.stiffness_warping)
         reject("Material/Model", model_name, "is not a model of P(F): it "
                "cannot be fitted");
-      if (material.viscoelasticity.active())
-        reject("Material/Viscoelasticity/Weights",
-               material.viscoelasticity.weights_text,
-               "fitting viscoelastic constants is not available yet: fit "
-               "the hyperelastic (long-time) response without "
-               "viscoelasticity");
-      const auto model    = material.factory.create<3>();
+      file_prony.weights = material.viscoelasticity.weights;
+      file_prony.times   = material.viscoelasticity.relaxation_times;
+      prm.enter_subsection("Material");
+      prm.enter_subsection("Viscoelasticity");
+      duration_text = prm.get("Quasi-static duration");
+      prm.leave_subsection();
+      prm.leave_subsection();
+      if (material_model(model_name).uses_elastic_constants)
+        {
+          prm.enter_subsection("Material");
+          pair = prm.get("Elastic constants");
+          prm.leave_subsection();
+        }
+      const auto model    = parsed(*handler({})).factory.create<3>();
       const auto derivate = dynamic_cast<const ConstantDerivatives<3> *>(
         model.get());
       if (!derivate)
         reject("Material/Model", model_name, "does not give the derivatives "
                "of its stress with respect to its constants, so it cannot be "
                "fitted");
-      if (material_model(model_name).uses_elastic_constants)
+      if (!pair.empty())
         {
-          prm.enter_subsection("Material");
-          pair = prm.get("Elastic constants");
-          prm.leave_subsection();
           all_entries = pair == "Lame" ?
                           std::vector<std::string>{"Shear modulus",
                                                    "Lame lambda"} :
@@ -85,24 +90,7 @@ namespace hyperelastic
           all_entries      = derivate->constant_names();
           volumetric_entry = "Bulk modulus";
         }
-      for (const std::string &name : free_names)
-        {
-          if (!contains(all_entries, name))
-            reject("Fit/Free constants", name, "is not a constant of the " +
-                   model_name + " model" + (pair.empty() ? "" :
-                   " with 'Elastic constants = " + pair + "'") +
-                   "; its constants are " + listed(all_entries));
-          if (incompressible && name == volumetric_entry)
-            reject("Fit/Free constants", name, "is the volumetric constant, "
-                   "which cannot be free with Fit/Incompressible = true");
-          if (contains(free, name))
-            reject("Fit/Free constants", name, "is named twice");
-          free.push_back(name);
-        }
-      if (free.empty())
-        for (const std::string &name : all_entries)
-          if (name != volumetric_entry)
-            free.push_back(name);
+      select_free(free_names, incompressible, relaxation_data);
       // An exactly incompressible material ('inf', nu = 0.5): J = 1 leaves
       // its volumetric constant idle, but inf * 0 would be NaN, so a finite
       // stand-in is parsed instead (the written block keeps the file's text).
@@ -121,10 +109,90 @@ namespace hyperelastic
         }
     }
 
+    void
+    ModelConstants::select_free(const std::vector<std::string> &free_names,
+                                const bool incompressible,
+                                const bool relaxation_data)
+    {
+      const bool        viscoelastic = !file_prony.weights.empty();
+      bool              weights = false, times = false;
+      const std::string entry = "Fit/Free constants";
+      for (const std::string &name : free_names)
+        {
+          const bool prony = name == "Weights" || name == "Relaxation times";
+          if (prony && !viscoelastic)
+            reject(entry, name, "needs Material/Viscoelasticity with "
+                   "starting Weights and Relaxation times");
+          if (!prony && !contains(all_entries, name))
+            reject(entry, name, "is not a constant of the " + model_name +
+                   " model" + (pair.empty() ? "" :
+                   " with 'Elastic constants = " + pair + "'") +
+                   "; its constants are " + listed(all_entries) +
+                   (viscoelastic ? ", Weights, Relaxation times" : ""));
+          if (incompressible && name == volumetric_entry)
+            reject(entry, name, "is the volumetric constant, which cannot "
+                   "be free with Fit/Incompressible = true");
+          if (contains(free, name) || (name == "Weights" && weights) ||
+              (name == "Relaxation times" && times))
+            reject(entry, name, "is named twice");
+          if (name == "Weights")
+            weights = true;
+          else if (name == "Relaxation times")
+            times = true;
+          else
+            free.push_back(name);
+        }
+      if (free_names.empty())
+        {
+          for (const std::string &name : all_entries)
+            if (name != volumetric_entry)
+              free.push_back(name);
+          weights = times = viscoelastic && relaxation_data;
+        }
+      value_names = free;
+      const auto add = [&](const bool is_free, const std::string &name,
+                           std::vector<int> &columns) {
+        for (unsigned int j = 0; j < file_prony.weights.size(); ++j)
+          {
+            columns.push_back(is_free ? int(value_names.size()) : -1);
+            if (is_free)
+              value_names.push_back(name + " " + std::to_string(j + 1));
+          }
+      };
+      add(weights, "Weights", weight_column);
+      add(times, "Relaxation times", time_column);
+    }
+
     const std::vector<std::string> &
     ModelConstants::names() const
     {
-      return free;
+      return value_names;
+    }
+
+    const std::vector<int> &
+    ModelConstants::weight_columns() const
+    {
+      return weight_column;
+    }
+
+    const std::vector<int> &
+    ModelConstants::time_columns() const
+    {
+      return time_column;
+    }
+
+    PronySeries
+    ModelConstants::prony(const std::vector<double> &values) const
+    {
+      PronySeries series = file_prony;
+      for (unsigned int j = 0; j < series.weights.size(); ++j)
+        {
+          if (weight_column[j] >= 0 && unsigned(weight_column[j]) < values.size())
+            series.weights[j] = values[weight_column[j]];
+          if (time_column[j] >= 0 && unsigned(time_column[j]) < values.size())
+            series.times[j] = values[time_column[j]];
+        }
+      return series;
     }
 
     const std::string &
@@ -154,6 +222,12 @@ namespace hyperelastic
       std::vector<double> values;
       for (const std::string &name : free)
         values.push_back(std::stod(get(*prm, name)));
+      for (unsigned int j = 0; j < file_prony.weights.size(); ++j)
+        if (weight_column[j] >= 0)
+          values.push_back(file_prony.weights[j]);
+      for (unsigned int j = 0; j < file_prony.times.size(); ++j)
+        if (time_column[j] >= 0)
+          values.push_back(file_prony.times[j]);
       return values;
     }
 
@@ -166,12 +240,16 @@ namespace hyperelastic
       prm->enter_subsection("Material");
       if (pair.empty())
         prm->enter_subsection(model_name);
-      for (unsigned int k = 0; k < values.size(); ++k)
+      for (unsigned int k = 0; k < values.size() && k < free.size(); ++k)
         prm->set(free[k], exact_entry_text(values[k]));
       if (!volumetric_stand_in.empty())
         prm->set(volumetric_entry, volumetric_stand_in);
       if (pair.empty())
         prm->leave_subsection();
+      prm->enter_subsection("Viscoelasticity");
+      prm->set("Weights", "");
+      prm->set("Relaxation times", "");
+      prm->leave_subsection();
       prm->leave_subsection();
       return prm;
     }
@@ -179,26 +257,19 @@ namespace hyperelastic
     std::unique_ptr<Material<3>>
     ModelConstants::material(const std::vector<double> &values) const
     {
-      try
-        {
-          return parsed(*handler(values)).factory.create<3>();
-        }
-      catch (const InputError &)
-        {
-          return nullptr;
-        }
-    }
-
-    std::vector<std::vector<double>>
-    ModelConstants::chain(const std::vector<double> &values) const
-    {
-      return chain(*handler(values));
+      std::vector<std::vector<double>> d;
+      return material_and_chain(values, d);
     }
 
     std::unique_ptr<Material<3>>
     ModelConstants::material_and_chain(const std::vector<double>        &values,
                                        std::vector<std::vector<double>> &d) const
     {
+      const PronySeries series = prony(values);
+      for (unsigned int j = 0; j < series.weights.size(); ++j)
+        if (!(series.weights[j] >= 0.) || !(series.times[j] > 0.) ||
+            !std::isfinite(series.weights[j] + series.times[j]))
+          return nullptr;
       const auto prm = handler(values);
       try
         {
@@ -279,6 +350,21 @@ namespace hyperelastic
           for (const std::string &entry : all_entries)
             out << "    set " << entry << " = " << value(entry) << "\n";
           out << "  end\n";
+        }
+      if (!file_prony.weights.empty())
+        {
+          const PronySeries series = prony(values);
+          const auto        list   = [](const std::vector<double> &x) {
+            std::string text;
+            for (const double v : x)
+              text += (text.empty() ? "" : ", ") + exact_entry_text(v);
+            return text;
+          };
+          out << "  subsection Viscoelasticity\n"
+              << "    set Weights = " << list(series.weights) << "\n"
+              << "    set Relaxation times = " << list(series.times) << "\n"
+              << "    set Quasi-static duration = " << duration_text << "\n"
+              << "  end\n";
         }
       out << "end\n";
     }

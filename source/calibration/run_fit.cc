@@ -114,9 +114,19 @@ namespace hyperelastic
                            slash == std::string::npos ?
                              "." :
                              fit_file.substr(0, slash));
+          bool relaxation = false;
+          for (const TestData &test : parameters.data)
+            relaxation = relaxation || test.type == TestType::relaxation;
           fitted = std::make_unique<ModelConstants>(prm,
                                                     parameters.free_constants,
-                                                    parameters.incompressible);
+                                                    parameters.incompressible,
+                                                    relaxation);
+          if (relaxation &&
+              fitted->prony(fitted->start()).weights.empty())
+            reject("Material/Viscoelasticity/Weights",
+                   "",
+                   "a relaxation test fits the Prony series: give starting "
+                   "Weights and Relaxation times");
           check_enough_data(parameters.data, *fitted);
         }
       catch (const InputError &e)
@@ -148,8 +158,10 @@ namespace hyperelastic
                          "start (check the data's stretches and the "
                          "starting constants)");
       const auto material = constants.material(report.result.values);
-      report.fitted =
-        model_values(*material, parameters.data, parameters.incompressible);
+      report.fitted = model_values(*material,
+                                   constants.prony(report.result.values),
+                                   parameters.data,
+                                   parameters.incompressible);
       report.stretch_2 =
         second_stretches(*material, parameters.data, parameters.incompressible);
       report.stability = drucker_stability(*material,

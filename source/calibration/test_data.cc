@@ -53,16 +53,26 @@ namespace hyperelastic
 
       /// The states and measured values of one data row.
       void
-      add_row(TestData &data, const std::vector<double> &v,
-              const std::string &where)
+      add_row(TestData                  &data,
+              const std::vector<double> &v,
+              const double               held_stretch,
+              const std::string         &where)
       {
         const bool shear = data.type == TestType::simple_shear;
-        if (!shear && !(v[0] > 0.))
+        const bool relaxation = data.type == TestType::relaxation;
+        if (!shear && !relaxation && !(v[0] > 0.))
           throw InputError(where + ": " + required_columns(data.type)[0] +
                            " must be positive");
+        if (relaxation && v[0] < 0.)
+          throw InputError(where + ": time must not be negative");
         TestState state;
         state.type      = data.type;
         state.stretch_1 = v[0];
+        if (relaxation)
+          {
+            state.stretch_1 = held_stretch;
+            state.time      = v[0];
+          }
         if (data.type == TestType::biaxial)
           {
             if (!(v[1] > 0.))
@@ -95,13 +105,17 @@ namespace hyperelastic
             return {"shear", "nominal_shear_stress"};
           case TestType::volumetric:
             return {"J", "pressure"};
+          case TestType::relaxation:
+            return {"time", "nominal_stress"};
           default:
             return {"stretch", "nominal_stress"};
         }
     }
 
     TestData
-    read_test_data(const std::string &file, const TestType type)
+    read_test_data(const std::string &file,
+                   const TestType     type,
+                   const double       held_stretch)
     {
       std::ifstream in(file);
       if (!in)
@@ -146,7 +160,7 @@ namespace hyperelastic
                                  " values, the header has more columns");
               values.push_back(number(fields[c], where));
             }
-          add_row(data, values, where);
+          add_row(data, values, held_stretch, where);
         }
       if (data.states.empty())
         throw InputError("test data file '" + file + "' has no data rows" +

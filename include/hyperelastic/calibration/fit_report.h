@@ -3,7 +3,11 @@
 // <Base name>_material.prm (a Material block ready to include in a scene,
 // with this summary as its header) and <Base name>_fit.csv (one row per
 // measured value: data, test, stretch_1, stretch_2, measured, fitted,
-// component). scripts/plot_fit.py draws the CSV.
+// component, time). stretch_1 is the data's first column (stretch, shear,
+// J; a relaxation test's held stretch), stretch_2 the second stretch
+// (biaxial) or the fitted state's y stretch, component 1 or 2 the stress of
+// a biaxial point, time a relaxation test's. scripts/plot_fit.py draws the
+// CSV.
 #pragma once
 
 #include <hyperelastic/calibration/drucker_stability.h>

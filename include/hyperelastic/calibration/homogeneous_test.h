@@ -12,6 +12,9 @@
 //   biaxial       (l1, l2, a)        traction-free z
 //   simple shear  F = I + g e_x e_y  P_xy measured, no lateral freedom
 //   volumetric    F = J^(1/3) I      pressure -sigma_xx = -P_xx J^(-2/3)
+//   relaxation    a uniaxial stretch held from time 0: here its long-term
+//                 (equilibrium) stress; the Prony factor is the fit's
+//                 (calibration/material_fit.h)
 // Incompressible: J = 1 fixes a, and a pressure p F^-T is added so that the
 // free face carries no traction: N = P_oo - (l_f / l_o) P_ff (o the
 // measured, f the free direction). Simple shear is isochoric with
@@ -36,11 +39,12 @@ namespace hyperelastic
       planar,
       simple_shear,
       biaxial,
-      volumetric
+      volumetric,
+      relaxation
     };
 
     /// "uniaxial | equibiaxial | planar | simple shear | biaxial |
-    /// volumetric" (a parameter pattern, in this order).
+    /// volumetric | relaxation" (a parameter pattern, in this order).
     std::string
     test_type_names();
 
@@ -60,6 +64,7 @@ namespace hyperelastic
       double       stretch_1  = 1.;
       double       stretch_2  = 1.; ///< biaxial only
       unsigned int component  = 0;  ///< biaxial: 0 = P_xx, 1 = P_yy
+      double       time       = 0.; ///< relaxation: time since the jump
     };
 
     /// The model's measured quantity at @p state, and its derivatives with

@@ -1,6 +1,12 @@
 // The fit of a model's constants to homogeneous test data: minimises
 //   1/2 sum_tests w_t sum_points (N_model(state; c) - N_measured)^2
-// (absolute nominal-stress residuals) over the free entries c by
+// with N_model the long-term response (calibration/homogeneous_test.h),
+// times 1 + sum_j beta_j exp(-t / tau_j) for a relaxation test: with J = 1
+// the overstress of the program's Prony series (materials/
+// viscoelasticity.h) after a jump to a held stretch is beta_j exp(-t/tau_j)
+// times the isochoric stress, and the isochoric and the full nominal stress
+// are the same, the volumetric stress being a pressure. Absolute
+// nominal-stress residuals, over the free values c (model_constants.h) by
 // Levenberg-Marquardt with exact derivatives (the model's
 // ConstantDerivatives through calibration/homogeneous_test.h), from the
 // parameter file's values and Starts - 1 more starts scattered around them
@@ -34,9 +40,10 @@ namespace hyperelastic
                  unsigned int                 starts);
 
     /// The model's value at every state of every test (NaN where it is
-    /// undefined).
+    /// undefined), with the Prony series @p prony for relaxation tests.
     std::vector<std::vector<double>>
     model_values(const Material<3>           &material,
+                 const PronySeries           &prony,
                  const std::vector<TestData> &data,
                  bool                         incompressible);
   } // namespace calibration

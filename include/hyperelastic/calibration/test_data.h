@@ -5,6 +5,7 @@
 //   simple shear:  shear, nominal_shear_stress
 //   volumetric:    J, pressure (pressure = -mean Cauchy stress: positive
 //                  in compression)
+//   relaxation:    time, nominal_stress (uniaxial, at a held stretch)
 // A header row names the columns (in any order; others are ignored); lines
 // starting with '#' and blank lines are skipped.
 #pragma once
@@ -33,10 +34,13 @@ namespace hyperelastic
     std::vector<std::string>
     required_columns(TestType type);
 
-    /// Reads @p file (a path) for a test of @p type; an InputError names the
-    /// file and line for a missing column, a value that is not a number, a
-    /// stretch (or J) <= 0, or a file without data rows.
+    /// Reads @p file (a path) for a test of @p type (a relaxation test at
+    /// the held stretch @p held_stretch); an InputError names the file and
+    /// line for a missing column, a value that is not a number, a stretch
+    /// (or J) <= 0, a negative time, or a file without data rows.
     TestData
-    read_test_data(const std::string &file, TestType type);
+    read_test_data(const std::string &file,
+                   TestType           type,
+                   double             held_stretch = 1.);
   } // namespace calibration
 } // namespace hyperelastic
