@@ -177,17 +177,22 @@ namespace hyperelastic
           }
         const std::array<double, 3> l = stretches_with(state, a);
         const Tensor<2, 3>          F = diagonal(l);
-        Tensor<2, 3>                P;
-        StressTangent<3>            A;
-        material.stress_and_tangent(F, P, A);
         // Incompressible: the pressure that frees face f; compressible: P_ff
-        // is 0 and a moves with the constants instead.
+        // is 0 and a moves with the constants instead (dP/dF needed).
+        Tensor<2, 3>     P;
+        StressTangent<3> A;
+        if (incompressible || !derivatives)
+          P = material.first_piola_kirchhoff(F);
+        else
+          material.stress_and_tangent(F, P, A);
         const double ratio = l[f] / l[o];
         response.value = incompressible ? P[o][o] - ratio * P[f][f] : P[o][o];
         if (!derivatives)
           return response;
-        const double coupling = lateral_slope(A, o, test.pattern) /
-                                lateral_slope(A, f, test.pattern);
+        const double coupling =
+          incompressible ? 0. :
+                           lateral_slope(A, o, test.pattern) /
+                             lateral_slope(A, f, test.pattern);
         for (const Tensor<2, 3> &dP : derivatives->stress_derivatives(F))
           response.derivatives.push_back(
             incompressible ? dP[o][o] - ratio * dP[f][f] :

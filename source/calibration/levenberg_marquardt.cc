@@ -77,35 +77,51 @@ namespace hyperelastic
           result.cost = std::numeric_limits<double>::infinity();
           return result;
         }
-      double       m          = 1e-3;
+      // Nielsen's damping update from the gain ratio rho (actual over
+      // predicted fall of the cost).
+      double       m = 1e-3, nu = 2.;
       unsigned int flat_steps = 0; // accepted steps in a row that gain ~0
       for (; result.iterations < settings.max_iterations; ++result.iterations)
         {
           const std::vector<double> dx = damped_step(current, m);
           if (dx.empty())
             {
-              m *= 10.;
+              m *= nu;
+              nu *= 2.;
               continue;
             }
-          std::vector<double> trial = result.x;
+          std::vector<double> trial  = result.x;
           double              change = 0.;
           for (unsigned int i = 0; i < dx.size(); ++i)
             {
               trial[i] += dx[i];
               change = std::max(change,
                                 std::abs(dx[i]) /
-                                  std::max(std::abs(result.x[i]), 1.));
+                                  std::max(std::abs(result.x[i]), 1e-300));
+            }
+          // The model's fall -g.dx - |J dx|^2 / 2, g = J^T r.
+          double predicted = 0.;
+          for (unsigned int k = 0; k < current.r.size(); ++k)
+            {
+              double J_dx = 0.;
+              for (unsigned int i = 0; i < dx.size(); ++i)
+                J_dx += current.J[k][i] * dx[i];
+              predicted -= current.r[k] * J_dx + 0.5 * J_dx * J_dx;
             }
           const Evaluation next = evaluate(problem, trial);
-          if (next.admissible && next.cost <= current.cost)
+          const double     fall = current.cost - next.cost;
+          const double     rho =
+            next.admissible && predicted > 0. ? fall / predicted : -1.;
+          if (rho > 0. || (next.admissible && fall == 0. && predicted <= 0.))
             {
-              const double fall = current.cost - next.cost;
-              result.x          = trial;
-              current           = next;
-              m                 = std::max(m / 3., 1e-12);
-              flat_steps = fall <= settings.tolerance * current.cost ?
-                             flat_steps + 1 :
-                             0;
+              result.x = trial;
+              current  = next;
+              m *= std::max(1. / 3., 1. - std::pow(2. * rho - 1., 3));
+              m  = std::max(m, 1e-15);
+              nu = 2.;
+              flat_steps =
+                fall <= settings.cost_tolerance * current.cost ? flat_steps + 1 :
+                                                                 0;
               if (change <= settings.tolerance || flat_steps >= 3 ||
                   current.cost == 0.)
                 {
@@ -115,7 +131,8 @@ namespace hyperelastic
             }
           else
             {
-              m *= 4.;
+              m *= nu;
+              nu *= 2.;
               if (change <= settings.tolerance || m > 1e16)
                 {
                   result.converged = true;

@@ -237,11 +237,10 @@ namespace hyperelastic
       auto prm = std::make_unique<dealii::ParameterHandler>();
       MaterialParameters::declare(*prm);
       prm->parse_input_from_string(file_text, "", true);
+      set_free(*prm, values);
       prm->enter_subsection("Material");
       if (pair.empty())
         prm->enter_subsection(model_name);
-      for (unsigned int k = 0; k < values.size() && k < free.size(); ++k)
-        prm->set(free[k], exact_entry_text(values[k]));
       if (!volumetric_stand_in.empty())
         prm->set(volumetric_entry, volumetric_stand_in);
       if (pair.empty())
@@ -252,6 +251,20 @@ namespace hyperelastic
       prm->leave_subsection();
       prm->leave_subsection();
       return prm;
+    }
+
+    void
+    ModelConstants::set_free(dealii::ParameterHandler  &prm,
+                             const std::vector<double> &values) const
+    {
+      prm.enter_subsection("Material");
+      if (pair.empty())
+        prm.enter_subsection(model_name);
+      for (unsigned int k = 0; k < values.size() && k < free.size(); ++k)
+        prm.set(free[k], exact_entry_text(values[k]));
+      if (pair.empty())
+        prm.leave_subsection();
+      prm.leave_subsection();
     }
 
     std::unique_ptr<Material<3>>
@@ -270,15 +283,19 @@ namespace hyperelastic
         if (!(series.weights[j] >= 0.) || !(series.times[j] > 0.) ||
             !std::isfinite(series.weights[j] + series.times[j]))
           return nullptr;
-      const auto prm = handler(values);
+      if (!trial_handler)
+        trial_handler = handler(values);
+      else
+        set_free(*trial_handler, values);
       try
         {
-          auto material = parsed(*prm).factory.create<3>();
-          d             = chain(*prm);
+          auto material = parsed(*trial_handler).factory.create<3>();
+          d             = chain(*trial_handler);
           return material;
         }
       catch (const InputError &)
         {
+          trial_handler.reset();
           return nullptr;
         }
     }

@@ -35,10 +35,13 @@ namespace hyperelastic
 
     struct LevenbergMarquardtSettings
     {
-      unsigned int max_iterations = 500;
-      /// Stop when a step changes no unknown by more than this (relative
-      /// to max(|x_k|, 1)) or the cost by less than this relative amount.
+      unsigned int max_iterations = 300;
+      /// Stop when a step changes no unknown by more than this relative
+      /// amount,
       double tolerance = 1e-13;
+      /// or when three accepted steps in a row lower the cost by less than
+      /// this fraction of it.
+      double cost_tolerance = 1e-10;
     };
 
     /// From @p start, which must be admissible (otherwise the result has

@@ -129,6 +129,14 @@ namespace hyperelastic
       /// viscoelasticity (the equilibrium model).
       std::unique_ptr<dealii::ParameterHandler>
       handler(const std::vector<double> &values) const;
+      /// The handler material_and_chain() parses every trial in: made by
+      /// handler() once and reused, since each trial sets every free entry;
+      /// dropped when a rejected trial leaves it inside a subsection.
+      mutable std::unique_ptr<dealii::ParameterHandler> trial_handler;
+      /// Writes the model's free entries at @p values into @p prm.
+      void
+      set_free(dealii::ParameterHandler  &prm,
+               const std::vector<double> &values) const;
       /// chain() from a handler at the values.
       std::vector<std::vector<double>>
       chain(dealii::ParameterHandler &prm) const;

@@ -224,9 +224,10 @@ namespace hyperelastic
       return names;
     }
 
-    /// In the order mu1, alpha1, ..., alpha3, Bulk modulus. P is linear in
-    /// mu_p and kappa: the stress of the model with that constant 1 and the
-    /// other linear ones 0. With m = alpha_p / 2 and C = sum_i c_i n_i n_i^T,
+    /// In the order mu1, alpha1, ..., alpha3, Bulk modulus, from one
+    /// spectral decomposition. P is linear in mu_p and kappa: dP/dmu_p =
+    /// F a (C^(m-1) - T/3 C^-1), dP/dkappa = F (u - 1)/2 C^-1. With m =
+    /// alpha_p / 2 and C = sum_i c_i n_i n_i^T,
     /// S_p = mu_p a (C^(m-1) - T/3 C^-1), a = u^(-m/3), T = sum_i c_i^m:
     ///   dS_p/dm = mu_p sum_i [da (c_i^(m-1) - T / (3 c_i))
     ///                         + a (c_i^(m-1) ln c_i - dT / (3 c_i))] n_i n_i^T,
@@ -249,37 +250,37 @@ namespace hyperelastic
             P[i][j] = P3[i][j];
         return P;
       };
+      std::array<double, 3> inverse;
+      for (unsigned int i = 0; i < 3; ++i)
+        inverse[i] = 1. / s.values[i];
       for (unsigned int p = 0; p < 3; ++p)
         {
-          OgdenConstants unit = constants;
-          unit.mu             = {{0., 0., 0.}};
-          unit.mu[p]          = 1.;
-          unit.kappa          = 0.;
-          dP[2 * p]           = Ogden<dim>(unit).first_piola_kirchhoff(F);
-          const double m      = 0.5 * constants.alpha[p];
-          const double a      = std::exp(-m / 3. * log_u);
+          const double m  = 0.5 * constants.alpha[p];
+          const double a  = std::exp(-m / 3. * log_u);
+          const double da = -log_u / 3. * a;
           double       T = 0., dT = 0.;
+          std::array<double, 3> power; // c_i^(m-1)
           for (unsigned int i = 0; i < 3; ++i)
             {
-              const double c_m = std::pow(s.values[i], m);
-              T += c_m;
-              dT += c_m * std::log(s.values[i]);
+              power[i] = std::pow(s.values[i], m - 1.);
+              T += power[i] * s.values[i];
+              dT += power[i] * s.values[i] * std::log(s.values[i]);
             }
-          const double          da = -log_u / 3. * a;
-          std::array<double, 3> g;
+          std::array<double, 3> unit_mu, d_alpha;
           for (unsigned int i = 0; i < 3; ++i)
             {
-              const double c = s.values[i];
-              const double power = std::pow(c, m - 1.);
-              g[i] = da * (power - T / (3. * c)) +
-                     a * (power * std::log(c) - dT / (3. * c));
+              unit_mu[i] = a * (power[i] - T / 3. * inverse[i]);
+              d_alpha[i] = da * (power[i] - T / 3. * inverse[i]) +
+                           a * (power[i] * std::log(s.values[i]) -
+                                dT / 3. * inverse[i]);
             }
-          dP[2 * p + 1] = 0.5 * constants.mu[p] * in_plane(function_of(s, g));
+          dP[2 * p]     = in_plane(function_of(s, unit_mu));
+          dP[2 * p + 1] = 0.5 * constants.mu[p] * in_plane(function_of(s, d_alpha));
         }
-      OgdenConstants volumetric = constants;
-      volumetric.mu             = {{0., 0., 0.}};
-      volumetric.kappa          = 1.;
-      dP[6] = Ogden<dim>(volumetric).first_piola_kirchhoff(F);
+      const double u = J * J;
+      for (double &c_inverse : inverse)
+        c_inverse *= 0.5 * (u - 1.);
+      dP[6] = in_plane(function_of(s, inverse));
       return dP;
     }
 

@@ -1,0 +1,167 @@
+// Calibration (issue 58): the Material block a fit writes, included in
+// homogeneous 3D scenes of the uniaxial, equibiaxial, planar and biaxial
+// tests, reproduces the fitted curve (the same stress function): each
+// scene's end-face reaction per reference area against the fit's value at
+// the stretch of every load step, relative to the curve's scale, 1e-8.
+// The fit is compressible (the scenes' lateral faces are free), of a
+// one-term Ogden model with its bulk modulus, from data the model made.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <hyperelastic/calibration/material_fit.h>
+#include <hyperelastic/calibration/model_constants.h>
+#include <hyperelastic/materials/material_parameters.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "support/checker.h"
+#include "support/scene_run.h"
+
+using namespace hyperelastic;
+using namespace hyperelastic::calibration;
+
+namespace
+{
+  const char *material_text(const double scale)
+  {
+    static std::string text;
+    std::ostringstream out;
+    out.precision(17);
+    out << "subsection Material\n  set Model = Ogden\n  subsection Ogden\n"
+        << "    set mu1 = " << 0.8 * scale << "\n    set alpha1 = "
+        << 2.6 * scale << "\n    set mu2 = 0\n    set mu3 = 0\n"
+        << "    set Bulk modulus = " << 12. * scale << "\n  end\nend\n";
+    text = out.str();
+    return text.c_str();
+  }
+
+  /// The scene: the unit cube on rollers at x = 0, y = 0, z = 0, stretched
+  /// by the test's end displacements in 4 load steps to (l1, l2).
+  std::string
+  scene(const TestType type, const double l1, const double l2,
+        const std::string &material)
+  {
+    std::ostringstream out;
+    out.precision(17);
+    out << "subsection Problem\n  set Dimension = 3\nend\n"
+        << "subsection Mesh\n  set Source = box\n  set Lower corner = 0, 0, 0\n"
+        << "  set Upper corner = 1, 1, 1\n  set Subdivisions = 2, 2, 2\nend\n"
+        << material
+        << "subsection Loading\n  set Number of load steps = 4\nend\n"
+        << "subsection Newton\n  set Relative residual tolerance = 1e-13\nend\n"
+        << "subsection Output\n  set Write VTU = false\nend\n";
+    int k = 0;
+    const auto dirichlet = [&](const int id, const char *component,
+                               const std::string &displacement) {
+      out << "subsection Dirichlet " << ++k << "\n  set Boundary id = " << id
+          << "\n  set Components = " << component
+          << "\n  set Displacement = " << displacement << "\nend\n";
+    };
+    dirichlet(0, "x", "0");
+    dirichlet(2, "y", "0");
+    dirichlet(4, "z", "0");
+    std::ostringstream x_end, y_end;
+    x_end.precision(17);
+    y_end.precision(17);
+    x_end << (l1 - 1.) << " * t";
+    y_end << (l2 - 1.) << " * t";
+    dirichlet(1, "x", x_end.str());
+    if (type == TestType::equibiaxial)
+      dirichlet(3, "y", x_end.str());
+    else if (type == TestType::planar)
+      dirichlet(3, "y", "0");
+    else if (type == TestType::biaxial)
+      dirichlet(3, "y", y_end.str());
+    return out.str();
+  }
+
+  double
+  column(const StepSummary<3> &summary, const std::string &name)
+  {
+    for (const auto &c : summary.columns())
+      if (c.name == name)
+        return c.value;
+    return std::nan("");
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  testing::Checker check(root);
+
+  // Data of the exact constants, a compressible fit from 10 % away.
+  dealii::ParameterHandler exact_prm;
+  MaterialParameters::declare(exact_prm);
+  exact_prm.parse_input_from_string(material_text(1.));
+  const ModelConstants exact(exact_prm, {"mu1", "alpha1", "Bulk modulus"}, false);
+  std::vector<TestData> data;
+  for (const TestType type : {TestType::uniaxial, TestType::equibiaxial,
+                              TestType::planar, TestType::biaxial})
+    {
+      TestData test;
+      test.index = data.size() + 1;
+      test.type  = type;
+      for (unsigned int i = 0; i < 8; ++i)
+        for (unsigned int c = 0; c < (type == TestType::biaxial ? 2 : 1); ++c)
+          {
+            TestState state;
+            state.type      = type;
+            state.stretch_1 = 0.8 + 0.1 * i;
+            state.stretch_2 = 1.2;
+            state.component = c;
+            test.states.push_back(state);
+          }
+      test.measured = model_values(*exact.material(exact.start()), {},
+                                   {test}, false)[0];
+      data.push_back(test);
+    }
+  dealii::ParameterHandler start_prm;
+  MaterialParameters::declare(start_prm);
+  start_prm.parse_input_from_string(material_text(1.1));
+  const ModelConstants constants(start_prm,
+                                 {"mu1", "alpha1", "Bulk modulus"},
+                                 false);
+  const FitResult result = fit_material(constants, data, false, 1);
+  std::ostringstream block;
+  constants.write_material_block(block, result.values);
+  const auto fitted = constants.material(result.values);
+
+  check.section("fitted material block in homogeneous scenes: end-face "
+                "reaction per area against the fitted curve (relative, "
+                "1e-8)");
+  for (const TestType type : {TestType::uniaxial, TestType::equibiaxial,
+                              TestType::planar, TestType::biaxial})
+    {
+      const double l1 = 1.6, l2 = 1.2;
+      const auto   problem = testing::run_scene<3>(scene(type, l1, l2,
+                                                         block.str()));
+      double worst = 0., scale = 0.;
+      for (const StepSummary<3> &row : problem->summaries())
+        for (unsigned int c = 0; c < (type == TestType::biaxial ? 2 : 1); ++c)
+          {
+            TestState state;
+            state.type      = type;
+            state.stretch_1 = 1. + (l1 - 1.) * row.load_factor;
+            state.stretch_2 = 1. + (l2 - 1.) * row.load_factor;
+            state.component = c;
+            TestData one;
+            one.type   = type;
+            one.states = {state};
+            const double curve =
+              model_values(*fitted, {}, {one}, false)[0][0];
+            const double reaction =
+              column(row, c == 0 ? "reaction_1_x" : "reaction_3_y");
+            worst = std::max(worst, std::abs(reaction - curve));
+            scale = std::max(scale, std::abs(curve));
+          }
+      check.at_most(test_type_name(type) + ": |reaction - fitted| / scale, "
+                      "4 load steps",
+                    worst / scale,
+                    1e-8);
+    }
+  return check.exit_code(0, MPI_COMM_WORLD);
+}
