@@ -118,6 +118,24 @@ namespace hyperelastic
     }
 
     void
+    write_curve_csv(std::ostream                           &out,
+                    const std::vector<TestData>            &curves,
+                    const std::vector<std::vector<double>> &values)
+    {
+      out << "data,test,stretch_1,stretch_2,fitted,component,time\n"
+          << std::setprecision(12);
+      for (unsigned int t = 0; t < curves.size(); ++t)
+        for (unsigned int i = 0; i < curves[t].states.size(); ++i)
+          {
+            const TestState &state = curves[t].states[i];
+            out << curves[t].index << "," << test_type_name(curves[t].type)
+                << "," << state.stretch_1 << "," << state.stretch_2 << ","
+                << values[t][i] << "," << state.component + 1 << ","
+                << state.time << "\n";
+          }
+    }
+
+    void
     write_material_file(std::ostream         &out,
                         const FitReport      &report,
                         const ModelConstants &constants)

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <random>
 
 namespace hyperelastic
@@ -151,6 +152,58 @@ namespace hyperelastic
       residuals(constants, data, incompressible, best.values, r, J);
       best.standard_errors = standard_errors(r, J);
       return best;
+    }
+
+    std::vector<TestData>
+    curve_states(const std::vector<TestData> &data)
+    {
+      const unsigned int    n = 100;
+      std::vector<TestData> curves;
+      for (const TestData &test : data)
+        {
+          TestData curve;
+          curve.index = test.index;
+          curve.type  = test.type;
+          // Groups of states along which one quantity varies: its range.
+          std::map<std::pair<unsigned int, double>, std::pair<double, double>>
+            groups;
+          for (const TestState &state : test.states)
+            {
+              const bool   biaxial = test.type == TestType::biaxial;
+              const double x =
+                biaxial ? state.stretch_2 :
+                test.type == TestType::relaxation ? state.time :
+                                                    state.stretch_1;
+              const auto key = std::make_pair(
+                state.component, biaxial ? state.stretch_1 : 0.);
+              auto found = groups.find(key);
+              if (found == groups.end())
+                groups[key] = {x, x};
+              else
+                found->second = {std::min(found->second.first, x),
+                                 std::max(found->second.second, x)};
+            }
+          for (const auto &[key, range] : groups)
+            for (unsigned int i = 0; i <= n; ++i)
+              {
+                TestState state = test.states[0];
+                const double x =
+                  range.first + (range.second - range.first) * i / n;
+                state.component = key.first;
+                if (test.type == TestType::biaxial)
+                  {
+                    state.stretch_1 = key.second;
+                    state.stretch_2 = x;
+                  }
+                else if (test.type == TestType::relaxation)
+                  state.time = x;
+                else
+                  state.stretch_1 = x;
+                curve.states.push_back(state);
+              }
+          curves.push_back(curve);
+        }
+      return curves;
     }
 
     std::vector<std::vector<double>>

@@ -80,20 +80,30 @@ namespace hyperelastic
       void
       write_files(const FitParameters  &parameters,
                   const FitReport      &report,
-                  const ModelConstants &constants)
+                  const ModelConstants &constants,
+                  const Material<3>    &material)
       {
         std::filesystem::create_directories(parameters.directory);
         const std::string base =
           parameters.directory + "/" + parameters.base_name;
-        std::ofstream material(base + "_material.prm");
-        write_material_file(material, report, constants);
+        std::ofstream prm_file(base + "_material.prm");
+        write_material_file(prm_file, report, constants);
         std::ofstream csv(base + "_fit.csv");
         write_fit_csv(csv, report);
-        if (!material || !csv)
+        const std::vector<TestData> curves = curve_states(parameters.data);
+        std::ofstream               curve(base + "_curve.csv");
+        write_curve_csv(curve,
+                        curves,
+                        model_values(material,
+                                     constants.prony(report.result.values),
+                                     curves,
+                                     parameters.incompressible));
+        if (!prm_file || !csv || !curve)
           throw InputError("cannot write the fit's files in '" +
                            parameters.directory + "'");
-        std::cout << "Wrote " << base << "_material.prm and " << base
-                  << "_fit.csv (picture: python3 scripts/plot_fit.py " << base
+        std::cout << "Wrote " << base << "_material.prm, " << base
+                  << "_fit.csv and " << base
+                  << "_curve.csv (picture: python3 scripts/plot_fit.py " << base
                   << "_fit.csv)" << std::endl;
       }
     } // namespace
@@ -175,7 +185,7 @@ namespace hyperelastic
         return;
       for (const std::string &line : report.summary())
         std::cout << line << "\n";
-      write_files(parameters, report, constants);
+      write_files(parameters, report, constants, *material);
     }
   } // namespace calibration
 } // namespace hyperelastic

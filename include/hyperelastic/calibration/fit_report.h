@@ -3,7 +3,8 @@
 // <Base name>_material.prm (a Material block ready to include in a scene,
 // with this summary as its header) and <Base name>_fit.csv (one row per
 // measured value: data, test, stretch_1, stretch_2, measured, fitted,
-// component, time). stretch_1 is the data's first column (stretch, shear,
+// component, time), and <Base name>_curve.csv (the fitted model along
+// each test's range, for drawing). stretch_1 is the data's first column (stretch, shear,
 // J; a relaxation test's held stretch), stretch_2 the second stretch
 // (biaxial) or the fitted state's y stretch, component 1 or 2 the stress of
 // a biaxial point, time a relaxation test's. scripts/plot_fit.py draws the
@@ -58,6 +59,14 @@ namespace hyperelastic
     /// <Base name>_fit.csv.
     void
     write_fit_csv(std::ostream &out, const FitReport &report);
+
+    /// <Base name>_curve.csv: the fitted model along @p curves (states
+    /// of curve_states()) with its @p values: data, test, stretch_1,
+    /// stretch_2, fitted, component, time.
+    void
+    write_curve_csv(std::ostream                           &out,
+                    const std::vector<TestData>            &curves,
+                    const std::vector<std::vector<double>> &values);
 
     /// <Base name>_material.prm: the summary as '#' comments, then the
     /// Material block.

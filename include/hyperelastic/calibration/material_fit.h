@@ -39,6 +39,13 @@ namespace hyperelastic
                  bool                         incompressible,
                  unsigned int                 starts);
 
+    /// For drawing: each test's states at 101 points between its data's
+    /// ends (uniaxial ... volumetric: over the first column; biaxial: per
+    /// stress and first stretch, over the second; relaxation: over time).
+    /// No measured values.
+    std::vector<TestData>
+    curve_states(const std::vector<TestData> &data);
+
     /// The model's value at every state of every test (NaN where it is
     /// undefined), with the Prony series @p prony for relaxation tests.
     std::vector<std::vector<double>>
