@@ -2,7 +2,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/calibration/run_fit.h>
+#include <hyperelastic/fit_command.h>
 #include <hyperelastic/parameters.h>
 #include <hyperelastic/problem.h>
 
@@ -59,7 +59,7 @@ main(int argc, char *argv[])
     }
   if (argc == 3 && std::string(argv[1]) == "--fit")
     return run_and_report(
-      [&]() { calibration::run_fit(argv[2], comm); }, comm);
+      [&]() { run_fit_command(argv[2], comm); }, comm);
   const bool        restart = argc == 4 && std::string(argv[1]) == "--restart";
   const std::string scene   = restart ? argv[3] : argument;
   if (!(argc == 2 || restart) || scene.empty() || scene[0] == '-')

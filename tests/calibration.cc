@@ -12,12 +12,12 @@
 #include <hyperelastic/calibration/model_constants.h>
 #include <hyperelastic/materials/material_parameters.h>
 
+#include "support/checker.h"
+
 #include <chrono>
 #include <cmath>
 #include <iostream>
 #include <sstream>
-
-#include "support/checker.h"
 
 using namespace hyperelastic;
 using namespace hyperelastic::calibration;
@@ -28,19 +28,19 @@ namespace
   /// its own subsection unless 'pair' is set).
   struct ModelCase
   {
-    std::string                                      model;
-    std::string                                      pair; // Lame-based
-    std::vector<std::pair<std::string, double>>      entries;
-    std::vector<std::string>                         free; // fitted
-    std::vector<TestType>                            tests;
-    bool                                             incompressible = true;
+    std::string                                 model;
+    std::string                                 pair; // Lame-based
+    std::vector<std::pair<std::string, double>> entries;
+    std::vector<std::string>                    free; // fitted
+    std::vector<TestType>                       tests;
+    bool                                        incompressible = true;
   };
 
   std::vector<ModelCase>
   model_cases()
   {
-    const std::string EN = "Young's modulus and Poisson's ratio";
-    const auto lame_case = [&](const std::string &model) {
+    const std::string EN        = "Young's modulus and Poisson's ratio";
+    const auto        lame_case = [&](const std::string &model) {
       return ModelCase{model,
                        EN,
                        {{"Young's modulus", 3.}, {"Poisson's ratio", 0.3}},
@@ -171,20 +171,20 @@ namespace
         const double t = i / 11.;
         switch (type)
           {
-            case TestType::volumetric:
-              add(0.9 + 0.15 * t, 1., 0);
-              break;
-            case TestType::simple_shear:
-              add(-0.5 + 1.5 * t, 1., 0);
-              break;
-            case TestType::biaxial:
-              add(0.8 + 1.2 * t, 1.1 + 0.4 * t, i % 2);
-              break;
-            case TestType::uniaxial:
-              add(0.6 + 3.0 * t, 1., 0);
-              break;
-            default:
-              add(0.8 + 1.6 * t, 1., 0);
+          case TestType::volumetric:
+            add(0.9 + 0.15 * t, 1., 0);
+            break;
+          case TestType::simple_shear:
+            add(-0.5 + 1.5 * t, 1., 0);
+            break;
+          case TestType::biaxial:
+            add(0.8 + 1.2 * t, 1.1 + 0.4 * t, i % 2);
+            break;
+          case TestType::uniaxial:
+            add(0.6 + 3.0 * t, 1., 0);
+            break;
+          default:
+            add(0.8 + 1.6 * t, 1., 0);
           }
       }
     return states;
@@ -204,9 +204,9 @@ namespace
     for (const auto &entry : c.entries)
       if (entry.second == 0.)
         continue;
-      else if (!incompressible ||
-          (entry.first != "Bulk modulus" && entry.first != "Poisson's ratio" &&
-           entry.first != "Lame lambda"))
+      else if (!incompressible || (entry.first != "Bulk modulus" &&
+                                   entry.first != "Poisson's ratio" &&
+                                   entry.first != "Lame lambda"))
         free.push_back(entry.first);
     const ModelConstants      constants(prm, free, incompressible);
     const std::vector<double> values = constants.start();
@@ -215,29 +215,33 @@ namespace
       {
         std::vector<std::vector<double>> chain;
         const auto material = constants.material_and_chain(values, chain);
-        const auto response = homogeneous_response(
-          *material,
-          dynamic_cast<const ConstantDerivatives<3> *>(material.get()),
-          state,
-          incompressible);
+        const auto response =
+          homogeneous_response(*material,
+                               dynamic_cast<const ConstantDerivatives<3> *>(
+                                 material.get()),
+                               state,
+                               incompressible);
         for (unsigned int k = 0; k < values.size(); ++k)
           {
             double exact = 0.;
             for (unsigned int m = 0; m < chain.size(); ++m)
               exact += response.derivatives[m] * chain[m][k];
-            const double h = 1e-5 * std::max(std::abs(values[k]), 1e-3);
+            const double        h  = 1e-5 * std::max(std::abs(values[k]), 1e-3);
             std::vector<double> up = values, down = values;
             up[k] += h;
             down[k] -= h;
             const double difference =
-              (homogeneous_response(*constants.material(up), nullptr, state,
-                                    incompressible).value -
-               homogeneous_response(*constants.material(down), nullptr, state,
-                                    incompressible).value) /
+              (homogeneous_response(
+                 *constants.material(up), nullptr, state, incompressible)
+                 .value -
+               homogeneous_response(
+                 *constants.material(down), nullptr, state, incompressible)
+                 .value) /
               (2. * h);
-            const double scale =
-              std::max(std::abs(response.value) / std::max(std::abs(values[k]), 1e-3),
-                       std::abs(exact)) + 1e-12;
+            const double scale = std::max(std::abs(response.value) /
+                                            std::max(std::abs(values[k]), 1e-3),
+                                          std::abs(exact)) +
+                                 1e-12;
             worst = std::max(worst, std::abs(exact - difference) / scale);
           }
       }
@@ -280,13 +284,14 @@ namespace
     dealii::ParameterHandler prm;
     parse_block(prm, material_block(c, scale));
     const ModelConstants constants(prm, c.free, c.incompressible);
-    result = fit_material(constants, data, c.incompressible, 8);
+    result       = fit_material(constants, data, c.incompressible, 8);
     double worst = result.values.empty() ? 1. : 0.;
     for (unsigned int k = 0; k < result.values.size(); ++k)
       for (const auto &[name, value] : c.entries)
         if (name == c.free[k])
-          worst = std::max(worst, std::abs(result.values[k] - value) /
-                                    std::abs(value));
+          worst =
+            std::max(worst,
+                     std::abs(result.values[k] - value) / std::abs(value));
     return worst;
   }
 
@@ -326,8 +331,8 @@ namespace
     F[0][0] = stretch;
     F[1][1] = F[2][2] = 1. / std::sqrt(stretch);
     TestData data;
-    data.index = 2;
-    data.type  = TestType::relaxation;
+    data.index  = 2;
+    data.type   = TestType::relaxation;
     double time = 0., dt = 1e-10;
     for (unsigned int k = 0; k < 40; ++k)
       {
@@ -364,9 +369,10 @@ main(int argc, char *argv[])
                                   TestType::simple_shear,
                                   TestType::biaxial})
         for (const bool incompressible : {true, false})
-          worst = std::max(worst, worst_derivative_error(c, type, incompressible));
-      worst = std::max(worst,
-                       worst_derivative_error(c, TestType::volumetric, false));
+          worst =
+            std::max(worst, worst_derivative_error(c, type, incompressible));
+      worst =
+        std::max(worst, worst_derivative_error(c, TestType::volumetric, false));
       check.at_most(c.model + (c.pair.empty() ? "" : " (" + c.pair + ")"),
                     worst,
                     1e-6);
@@ -379,10 +385,10 @@ main(int argc, char *argv[])
       FitResult    result;
       const auto   begin = std::chrono::steady_clock::now();
       const double error = recovery_error(c, result);
-      const double seconds = std::chrono::duration<double>(
-                               std::chrono::steady_clock::now() - begin)
-                               .count();
-      std::string  tests;
+      const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin)
+          .count();
+      std::string tests;
       for (const TestType type : c.tests)
         tests += (tests.empty() ? "" : "+") + test_type_name(type);
       check.at_most(c.model + " from " + tests +
@@ -417,11 +423,9 @@ main(int argc, char *argv[])
                                        {},
                                        data,
                                        c.incompressible);
-      const auto again  = model_values(*material.factory.create<3>(),
-                                       {},
-                                       data,
-                                       c.incompressible);
-      double     worst = 0., scale_of_data = 0.;
+      const auto again =
+        model_values(*material.factory.create<3>(), {}, data, c.incompressible);
+      double worst = 0., scale_of_data = 0.;
       for (unsigned int t = 0; t < data.size(); ++t)
         for (unsigned int i = 0; i < data[t].measured.size(); ++i)
           {
@@ -468,12 +472,12 @@ main(int argc, char *argv[])
       double worst = result.values.size() == exact.size() ? 0. : 1.;
       for (unsigned int k = 0; k < exact.size() && k < result.values.size();
            ++k)
-        worst = std::max(worst,
-                         std::abs(result.values[k] - exact[k]) /
-                           std::abs(exact[k]));
+        worst =
+          std::max(worst,
+                   std::abs(result.values[k] - exact[k]) / std::abs(exact[k]));
       check.at_most(with_model ? "Yeoh constants and Prony series from "
-                                 "uniaxial + relaxation" :
-                                 "Prony series from relaxation at stretch 1.8",
+                                 "uniaxial + relaxation"
+                               : "Prony series from relaxation at stretch 1.8",
                     worst,
                     1e-6);
       std::ostringstream names;
@@ -493,7 +497,8 @@ main(int argc, char *argv[])
         {"kawabata_ogden", 0.008263975504}};    // Kawabata 1981, biaxial
       for (const auto &[name, optimum] : published)
         {
-          const std::string folder = std::string(argv[1]) + "/parameters/calibration";
+          const std::string folder =
+            std::string(argv[1]) + "/parameters/calibration";
           dealii::ParameterHandler prm;
           FitParameters::declare(prm);
           prm.parse_input(folder + "/" + name + ".prm");
@@ -502,7 +507,7 @@ main(int argc, char *argv[])
           const ModelConstants constants(prm,
                                          parameters.free_constants,
                                          parameters.incompressible);
-          const FitResult result = fit_material(constants,
+          const FitResult      result = fit_material(constants,
                                                 parameters.data,
                                                 parameters.incompressible,
                                                 parameters.starts);
@@ -539,15 +544,15 @@ main(int argc, char *argv[])
       {},
       {},
       true};
-    const double root = (0.1 - std::sqrt(0.01 - 0.0012)) / 0.006;
+    const double             root = (0.1 - std::sqrt(0.01 - 0.0012)) / 0.006;
     dealii::ParameterHandler prm;
     parse_block(prm, material_block(unstable));
     const ModelConstants constants(prm, {}, true);
-    const auto           yeoh = constants.material(constants.start());
+    const auto           yeoh       = constants.material(constants.start());
     const auto           analytic_D = [&](const TestState &state) {
       const std::vector<double> l = principal_stretches(*yeoh, state, true);
-      const double x  = l[0] * l[0] + l[1] * l[1] + l[2] * l[2] - 3.;
-      const double W1 = 0.1 - 0.1 * x + 0.003 * x * x;
+      const double x   = l[0] * l[0] + l[1] * l[1] + l[2] * l[2] - 3.;
+      const double W1  = 0.1 - 0.1 * x + 0.003 * x * x;
       const double W11 = -0.1 + 0.006 * x;
       std::vector<std::vector<double>> D(2, std::vector<double>(2));
       for (unsigned int a = 0; a < 2; ++a)
@@ -569,8 +574,9 @@ main(int argc, char *argv[])
           const auto E    = analytic_D(state);
           for (unsigned int a = 0; a < 2; ++a)
             for (unsigned int b = 0; b < 2; ++b)
-              worst = std::max(worst, std::abs(D[a][b] - E[a][b]) /
-                                        (std::abs(E[a][b]) + 1.));
+              worst = std::max(worst,
+                               std::abs(D[a][b] - E[a][b]) /
+                                 (std::abs(E[a][b]) + 1.));
         }
     check.at_most("D of an incompressible I1 model against 4 W1 (...) + 4 "
                   "W11 (...)",
@@ -609,12 +615,11 @@ main(int argc, char *argv[])
     parse_block(prm_stable, material_block(stable));
     const ModelConstants stable_constants(prm_stable, {}, true);
     for (const bool incompressible : {true, false})
-      for (const StabilityVerdict &verdict :
-           drucker_stability(*stable_constants.material(
-                               stable_constants.start()),
-                             incompressible,
-                             0.1,
-                             10.))
+      for (const StabilityVerdict &verdict : drucker_stability(
+             *stable_constants.material(stable_constants.start()),
+             incompressible,
+             0.1,
+             10.))
         check.is_true(std::string(incompressible ? "J = 1" : "compressible") +
                         " stable Yeoh, " + verdict.text(),
                       verdict.stable());

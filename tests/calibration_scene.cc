@@ -12,25 +12,27 @@
 #include <hyperelastic/calibration/model_constants.h>
 #include <hyperelastic/materials/material_parameters.h>
 
-#include <cmath>
-#include <sstream>
-
 #include "support/checker.h"
 #include "support/scene_run.h"
+
+#include <cmath>
+#include <sstream>
 
 using namespace hyperelastic;
 using namespace hyperelastic::calibration;
 
 namespace
 {
-  const char *material_text(const double scale)
+  const char *
+  material_text(const double scale)
   {
     static std::string text;
     std::ostringstream out;
     out.precision(17);
     out << "subsection Material\n  set Model = Ogden\n  subsection Ogden\n"
-        << "    set mu1 = " << 0.8 * scale << "\n    set alpha1 = "
-        << 2.6 * scale << "\n    set mu2 = 0\n    set mu3 = 0\n"
+        << "    set mu1 = " << 0.8 * scale
+        << "\n    set alpha1 = " << 2.6 * scale
+        << "\n    set mu2 = 0\n    set mu3 = 0\n"
         << "    set Bulk modulus = " << 12. * scale << "\n  end\nend\n";
     text = out.str();
     return text.c_str();
@@ -39,7 +41,9 @@ namespace
   /// The scene: the unit cube on rollers at x = 0, y = 0, z = 0, stretched
   /// by the test's end displacements in 4 load steps to (l1, l2).
   std::string
-  scene(const TestType type, const double l1, const double l2,
+  scene(const TestType     type,
+        const double       l1,
+        const double       l2,
         const std::string &material)
   {
     std::ostringstream out;
@@ -51,8 +55,9 @@ namespace
         << "subsection Loading\n  set Number of load steps = 4\nend\n"
         << "subsection Newton\n  set Relative residual tolerance = 1e-13\nend\n"
         << "subsection Output\n  set Write VTU = false\nend\n";
-    int k = 0;
-    const auto dirichlet = [&](const int id, const char *component,
+    int        k         = 0;
+    const auto dirichlet = [&](const int          id,
+                               const char        *component,
                                const std::string &displacement) {
       out << "subsection Dirichlet " << ++k << "\n  set Boundary id = " << id
           << "\n  set Components = " << component
@@ -90,17 +95,22 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool                               root =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   testing::Checker check(root);
 
   // Data of the exact constants, a compressible fit from 10 % away.
   dealii::ParameterHandler exact_prm;
   MaterialParameters::declare(exact_prm);
   exact_prm.parse_input_from_string(material_text(1.));
-  const ModelConstants exact(exact_prm, {"mu1", "alpha1", "Bulk modulus"}, false);
+  const ModelConstants  exact(exact_prm,
+                             {"mu1", "alpha1", "Bulk modulus"},
+                             false);
   std::vector<TestData> data;
-  for (const TestType type : {TestType::uniaxial, TestType::equibiaxial,
-                              TestType::planar, TestType::biaxial})
+  for (const TestType type : {TestType::uniaxial,
+                              TestType::equibiaxial,
+                              TestType::planar,
+                              TestType::biaxial})
     {
       TestData test;
       test.index = data.size() + 1;
@@ -115,8 +125,8 @@ main(int argc, char *argv[])
             state.component = c;
             test.states.push_back(state);
           }
-      test.measured = model_values(*exact.material(exact.start()), {},
-                                   {test}, false)[0];
+      test.measured =
+        model_values(*exact.material(exact.start()), {}, {test}, false)[0];
       data.push_back(test);
     }
   dealii::ParameterHandler start_prm;
@@ -125,20 +135,22 @@ main(int argc, char *argv[])
   const ModelConstants constants(start_prm,
                                  {"mu1", "alpha1", "Bulk modulus"},
                                  false);
-  const FitResult result = fit_material(constants, data, false, 1);
-  std::ostringstream block;
+  const FitResult      result = fit_material(constants, data, false, 1);
+  std::ostringstream   block;
   constants.write_material_block(block, result.values);
   const auto fitted = constants.material(result.values);
 
   check.section("fitted material block in homogeneous scenes: end-face "
                 "reaction per area against the fitted curve (relative, "
                 "1e-8)");
-  for (const TestType type : {TestType::uniaxial, TestType::equibiaxial,
-                              TestType::planar, TestType::biaxial})
+  for (const TestType type : {TestType::uniaxial,
+                              TestType::equibiaxial,
+                              TestType::planar,
+                              TestType::biaxial})
     {
       const double l1 = 1.6, l2 = 1.2;
-      const auto   problem = testing::run_scene<3>(scene(type, l1, l2,
-                                                         block.str()));
+      const auto   problem =
+        testing::run_scene<3>(scene(type, l1, l2, block.str()));
       double worst = 0., scale = 0.;
       for (const StepSummary<3> &row : problem->summaries())
         for (unsigned int c = 0; c < (type == TestType::biaxial ? 2 : 1); ++c)
@@ -149,17 +161,16 @@ main(int argc, char *argv[])
             state.stretch_2 = 1. + (l2 - 1.) * row.load_factor;
             state.component = c;
             TestData one;
-            one.type   = type;
-            one.states = {state};
-            const double curve =
-              model_values(*fitted, {}, {one}, false)[0][0];
+            one.type           = type;
+            one.states         = {state};
+            const double curve = model_values(*fitted, {}, {one}, false)[0][0];
             const double reaction =
               column(row, c == 0 ? "reaction_1_x" : "reaction_3_y");
             worst = std::max(worst, std::abs(reaction - curve));
             scale = std::max(scale, std::abs(curve));
           }
       check.at_most(test_type_name(type) + ": |reaction - fitted| / scale, "
-                      "4 load steps",
+                                           "4 load steps",
                     worst / scale,
                     1e-8);
     }

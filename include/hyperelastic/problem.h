@@ -174,6 +174,17 @@ namespace hyperelastic
     rebuild_materials(const MaterialParameters            &material,
                       const std::vector<RegionParameters> &regions);
 
+    /// At the converged state just reported (call it from the step
+    /// observer): the derivatives of the CSV column reaction_<id>_<axis>
+    /// with respect to the model's constants (in the order of its
+    /// ConstantDerivatives) by the adjoint of the converged equilibrium
+    /// r(u, c) = 0 (source/problem_sensitivity.cc). Empty where it does not
+    /// apply: a material part other than the generic one (mixed,
+    /// stiffness warping), contact, a non-symmetric tangent, a model
+    /// without ConstantDerivatives. Collective.
+    std::vector<double>
+    reaction_sensitivities(dealii::types::boundary_id id, unsigned int axis);
+
   private:
     // The set-up's steps (setup()).
     /// The equilibrium system, the linear solver's configuration, the

@@ -40,6 +40,18 @@ namespace hyperelastic
   }
 
   template <int dim>
+  std::vector<VectorType>
+  ElasticityOperator<dim>::constant_forces(const VectorType &u,
+                                           const VectorType &like) const
+  {
+    const auto *material_part =
+      dynamic_cast<const GenericAssembler<dim> *>(generic.get());
+    if (!material_part || has_stiff_terms())
+      return {};
+    return material_part->constant_forces(u, like);
+  }
+
+  template <int dim>
   ElasticityOperator<dim>::~ElasticityOperator() = default;
 
   template <int dim>

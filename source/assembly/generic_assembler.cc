@@ -1,4 +1,5 @@
 // The FEValues loops of the material part (any degree).
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/fe_values_extractors.h>
@@ -9,6 +10,7 @@
 #include <hyperelastic/assembly/generic_assembler.h>
 #include <hyperelastic/assembly/material_point.h>
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/materials/constant_derivatives.h>
 
 #include <cmath>
 #include <limits>
@@ -114,6 +116,63 @@ namespace hyperelastic
     });
     internal.compress(VectorOperation::add);
     return round_off.force_noise(dof_handler.get_communicator());
+  }
+
+  template <int dim>
+  std::vector<VectorType>
+  GenericAssembler<dim>::constant_forces(const VectorType &u,
+                                         const VectorType &like) const
+  {
+    std::vector<VectorType> forces;
+    bool                    available = true;
+    Vector<double>          cell_force(dof_handler.get_fe().dofs_per_cell);
+    for_each_cell(u, [&](CellData &data) {
+      for (unsigned int q = 0; q < data.F.size() && available; ++q)
+        {
+          const auto *derivatives =
+            dynamic_cast<const ConstantDerivatives<dim> *>(
+              &materials(data.cell, q));
+          if (!derivatives)
+            {
+              available = false;
+              break;
+            }
+          const std::vector<Tensor<2, dim>> dP =
+            derivatives->stress_derivatives(data.F[q]);
+          if (forces.empty())
+            {
+              forces.assign(dP.size(), like);
+              for (VectorType &force : forces)
+                force = 0.;
+            }
+          const double JxW = data.values.JxW(q);
+          for (unsigned int k = 0; k < dP.size(); ++k)
+            {
+              for (unsigned int i = 0; i < cell_force.size(); ++i)
+                cell_force[i] =
+                  (dP[k][data.component[i]] * data.gradient(i, q)) * JxW;
+              forces[k].add(data.dofs, cell_force);
+            }
+        }
+    });
+    // Every rank agrees on the count (a rank without cells takes the
+    // others'), and on whether the model gives them at all.
+    const unsigned int count = Utilities::MPI::max(
+      available ? static_cast<unsigned int>(forces.size()) : 0u,
+      dof_handler.get_communicator());
+    if (Utilities::MPI::min(available ? 1u : 0u,
+                            dof_handler.get_communicator()) == 0 ||
+        count == 0)
+      return {};
+    if (forces.empty())
+      {
+        forces.assign(count, like);
+        for (VectorType &force : forces)
+          force = 0.;
+      }
+    for (VectorType &force : forces)
+      force.compress(VectorOperation::add);
+    return forces;
   }
 
   template <int dim>

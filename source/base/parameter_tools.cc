@@ -105,4 +105,12 @@ namespace hyperelastic
   {
     return name == "x" ? 0 : (name == "y" ? 1 : 2);
   }
+  std::string
+  listed(const std::vector<std::string> &names)
+  {
+    std::string text;
+    for (const std::string &name : names)
+      text += (text.empty() ? "" : ", ") + name;
+    return text;
+  }
 } // namespace hyperelastic

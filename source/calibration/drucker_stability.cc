@@ -49,7 +49,8 @@ namespace hyperelastic
       double K[3][3];
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
-          K[i][j] = (i == j ? l[i] * P[i][i] : 0.) + l[i] * l[j] * A[i][i][j][j];
+          K[i][j] =
+            (i == j ? l[i] * P[i][i] : 0.) + l[i] * l[j] * A[i][i][j][j];
       if (incompressible)
         {
           std::vector<std::vector<double>> D(2, std::vector<double>(2));
@@ -58,7 +59,7 @@ namespace hyperelastic
               D[a][b] = K[a][b] - K[a][2] - K[2][b] + K[2][2];
           return D;
         }
-      const double J = l[0] * l[1] * l[2];
+      const double                     J = l[0] * l[1] * l[2];
       std::vector<std::vector<double>> D(3, std::vector<double>(3));
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
@@ -88,8 +89,8 @@ namespace hyperelastic
                 if (!positive_definite(
                       incremental_stiffness(material, state, incompressible)))
                   {
-                    (end > 1. ? verdict.first_unstable_in_tension :
-                                verdict.first_unstable_in_compression) =
+                    (end > 1. ? verdict.first_unstable_in_tension
+                              : verdict.first_unstable_in_compression) =
                       state.stretch_1;
                     break;
                   }

@@ -60,6 +60,23 @@ namespace hyperelastic
                         "Lowest and highest stretch (lowest < 1 < highest) "
                         "over which Drucker stability is checked along the "
                         "uniaxial, equibiaxial and planar paths.");
+      prm.declare_entry("Scene",
+                        "",
+                        Anything(),
+                        "A scene file (relative to this file) to fit through: "
+                        "its own Material subsection gives the model and the "
+                        "starting constants, and it is run with trial "
+                        "constants on the same mesh, its load steps landing "
+                        "on the data's load factors. Then 'Scene data' is "
+                        "the data and the Data k subsections must be empty. "
+                        "Quasi-static scenes.");
+      prm.declare_entry("Scene data",
+                        "",
+                        Anything(),
+                        "With 'Scene': a CSV with the columns load_factor and "
+                        "one column of the scene's CSV summary (for example "
+                        "reaction_2_z), the measured values at those load "
+                        "factors.");
       for (unsigned int k = 1; k <= max_data_sets; ++k)
         {
           prm.enter_subsection("Data " + std::to_string(k));
@@ -136,7 +153,7 @@ namespace hyperelastic
           const std::string file = dealii::Utilities::trim(prm.get("File"));
           if (!file.empty())
             {
-              const TestType type = test_type(prm.get("Test"));
+              const TestType    type    = test_type(prm.get("Test"));
               const std::string section = "Fit/Data " + std::to_string(k);
               if (type == TestType::volumetric && incompressible)
                 reject(section + "/Test",
@@ -164,6 +181,29 @@ namespace hyperelastic
             }
           prm.leave_subsection();
         }
+      scene = dealii::Utilities::trim(prm.get("Scene"));
+      const std::string scene_data =
+        dealii::Utilities::trim(prm.get("Scene data"));
+      const auto path = [&](const std::string &file) {
+        return file[0] == '/' ? file : folder + "/" + file;
+      };
+      if (!scene.empty())
+        {
+          if (!data.empty())
+            reject("Fit/Data " + std::to_string(data[0].index) + "/File",
+                   data[0].file,
+                   "a fit through a scene takes its data from 'Fit/Scene "
+                   "data' only");
+          if (scene_data.empty())
+            reject("Fit/Scene data",
+                   "",
+                   "a fit through a scene needs its data");
+          scene = path(scene);
+          data.push_back(read_scene_data(path(scene_data), scene_column));
+          data.back().index = 1;
+        }
+      else if (!scene_data.empty())
+        reject("Fit/Scene data", scene_data, "needs 'Fit/Scene'");
       prm.leave_subsection();
       if (data.empty())
         reject("Fit/Data 1/File", "", "a fit needs at least one data file");

@@ -36,16 +36,25 @@ namespace hyperelastic
         lines.push_back(line.str());
         line.str("");
       };
-      line << "Fit of the " << model << " model to " << data.size()
-           << " test(s), "
-           << (incompressible ? "incompressible (the fit assumed J = 1)" :
-                                "compressible (lateral stretches solved)")
-           << ", absolute nominal-stress residuals";
+      const bool scene = !data.empty() && data[0].type == TestType::scene;
+      if (scene)
+        line << "Fit of the " << model << " model through a scene, absolute "
+             << "residuals of its CSV column";
+      else
+        line << "Fit of the " << model << " model to " << data.size()
+             << " test(s), "
+             << (incompressible ? "incompressible (the fit assumed J = 1)"
+                                : "compressible (lateral stretches solved)")
+             << ", absolute nominal-stress residuals";
       flush();
+      for (const std::string &note : notes)
+        {
+          line << note;
+          flush();
+        }
       line << "Levenberg-Marquardt: " << result.starts_converged
            << " start(s) converged, " << result.iterations
-           << " iterations in all, " << std::setprecision(3) << seconds
-           << " s";
+           << " iterations in all, " << std::setprecision(3) << seconds << " s";
       flush();
       for (unsigned int k = 0; k < names.size(); ++k)
         {
@@ -57,23 +66,26 @@ namespace hyperelastic
       std::vector<double> all_measured, all_fitted;
       for (unsigned int t = 0; t < data.size(); ++t)
         {
-          const GoodnessOfFit fit = goodness_of_fit(data[t].measured, fitted[t]);
+          const GoodnessOfFit fit =
+            goodness_of_fit(data[t].measured, fitted[t]);
           line << std::setprecision(4) << "  Data " << data[t].index << " ("
-               << test_type_name(data[t].type) << ", " << data[t].measured.size()
-               << " values): RMS " << fit.rms << ", R^2 "
-               << std::setprecision(6) << fit.r_squared;
+               << test_type_name(data[t].type) << ", "
+               << data[t].measured.size() << " values): RMS " << fit.rms
+               << ", R^2 " << std::setprecision(6) << fit.r_squared;
           flush();
           all_measured.insert(all_measured.end(),
                               data[t].measured.begin(),
                               data[t].measured.end());
-          all_fitted.insert(all_fitted.end(), fitted[t].begin(), fitted[t].end());
+          all_fitted.insert(all_fitted.end(),
+                            fitted[t].begin(),
+                            fitted[t].end());
         }
       const GoodnessOfFit overall = goodness_of_fit(all_measured, all_fitted);
       line << std::setprecision(4) << "  Overall: RMS " << overall.rms
            << ", R^2 " << std::setprecision(6) << overall.r_squared;
       flush();
-      line << "Drucker stability (" << (incompressible ? "J = 1" : "compressible")
-           << "):";
+      line << "Drucker stability ("
+           << (incompressible ? "J = 1" : "compressible") << "):";
       flush();
       for (const StabilityVerdict &verdict : stability)
         {

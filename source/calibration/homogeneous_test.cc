@@ -12,14 +12,15 @@ namespace hyperelastic
   {
     namespace
     {
-      const std::array<std::pair<TestType, const char *>, 7> test_names = {
+      const std::array<std::pair<TestType, const char *>, 8> test_names = {
         {{TestType::uniaxial, "uniaxial"},
          {TestType::equibiaxial, "equibiaxial"},
          {TestType::planar, "planar"},
          {TestType::simple_shear, "simple shear"},
          {TestType::biaxial, "biaxial"},
          {TestType::volumetric, "volumetric"},
-         {TestType::relaxation, "relaxation"}}};
+         {TestType::relaxation, "relaxation"},
+         {TestType::scene, "scene"}}};
 
       constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 
@@ -48,15 +49,15 @@ namespace hyperelastic
         const double l1 = state.stretch_1;
         switch (state.type)
           {
-            case TestType::uniaxial:
-            case TestType::relaxation:
-              return {{l1, a, a}};
-            case TestType::equibiaxial:
-              return {{l1, l1, a}};
-            case TestType::planar:
-              return {{l1, 1., a}};
-            default:
-              return {{l1, state.stretch_2, a}};
+          case TestType::uniaxial:
+          case TestType::relaxation:
+            return {{l1, a, a}};
+          case TestType::equibiaxial:
+            return {{l1, l1, a}};
+          case TestType::planar:
+            return {{l1, 1., a}};
+          default:
+            return {{l1, state.stretch_2, a}};
           }
       }
 
@@ -67,15 +68,15 @@ namespace hyperelastic
         const double l1 = state.stretch_1;
         switch (state.type)
           {
-            case TestType::uniaxial:
-            case TestType::relaxation:
-              return 1. / std::sqrt(l1);
-            case TestType::equibiaxial:
-              return 1. / (l1 * l1);
-            case TestType::planar:
-              return 1. / l1;
-            default:
-              return 1. / (l1 * state.stretch_2);
+          case TestType::uniaxial:
+          case TestType::relaxation:
+            return 1. / std::sqrt(l1);
+          case TestType::equibiaxial:
+            return 1. / (l1 * l1);
+          case TestType::planar:
+            return 1. / l1;
+          default:
+            return 1. / (l1 * state.stretch_2);
           }
       }
 
@@ -147,8 +148,9 @@ namespace hyperelastic
                           const double                  J)
       {
         const double       s = std::cbrt(J);
-        const Tensor<2, 3> F = s * Tensor<2, 3>(dealii::unit_symmetric_tensor<3>());
-        Response           response;
+        const Tensor<2, 3> F =
+          s * Tensor<2, 3>(dealii::unit_symmetric_tensor<3>());
+        Response response;
         response.value = -material.first_piola_kirchhoff(F)[0][0] / (s * s);
         if (derivatives)
           for (const Tensor<2, 3> &dP : derivatives->stress_derivatives(F))
@@ -164,8 +166,8 @@ namespace hyperelastic
       {
         const StretchTest test = stretch_test(state);
         const unsigned    o = test.measured, f = test.free;
-        const double      a = incompressible ? isochoric_lateral(state) :
-                                               free_lateral(material, state);
+        const double      a = incompressible ? isochoric_lateral(state)
+                                             : free_lateral(material, state);
         Response          response;
         if (!std::isfinite(a))
           {
@@ -189,14 +191,14 @@ namespace hyperelastic
         response.value = incompressible ? P[o][o] - ratio * P[f][f] : P[o][o];
         if (!derivatives)
           return response;
-        const double coupling =
-          incompressible ? 0. :
-                           lateral_slope(A, o, test.pattern) /
-                             lateral_slope(A, f, test.pattern);
+        const double coupling = incompressible
+                                  ? 0.
+                                  : lateral_slope(A, o, test.pattern) /
+                                      lateral_slope(A, f, test.pattern);
         for (const Tensor<2, 3> &dP : derivatives->stress_derivatives(F))
-          response.derivatives.push_back(
-            incompressible ? dP[o][o] - ratio * dP[f][f] :
-                             dP[o][o] - coupling * dP[f][f]);
+          response.derivatives.push_back(incompressible
+                                           ? dP[o][o] - ratio * dP[f][f]
+                                           : dP[o][o] - coupling * dP[f][f]);
         return response;
       }
     } // namespace
@@ -206,7 +208,8 @@ namespace hyperelastic
     {
       std::string names;
       for (const auto &entry : test_names)
-        names += (names.empty() ? "" : "|") + std::string(entry.second);
+        if (entry.first != TestType::scene)
+          names += (names.empty() ? "" : "|") + std::string(entry.second);
       return names;
     }
 
@@ -254,8 +257,8 @@ namespace hyperelastic
           const double s = std::cbrt(state.stretch_1);
           return {s, s, s};
         }
-      const double a = incompressible ? isochoric_lateral(state) :
-                                        free_lateral(material, state);
+      const double                a = incompressible ? isochoric_lateral(state)
+                                                     : free_lateral(material, state);
       const std::array<double, 3> l = stretches_with(state, a);
       return {l[0], l[1], l[2]};
     }

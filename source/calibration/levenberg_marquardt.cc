@@ -18,7 +18,7 @@ namespace hyperelastic
       {
         std::vector<double>              r;
         std::vector<std::vector<double>> J;
-        double                           cost = 0.;
+        double                           cost       = 0.;
         bool                             admissible = false;
       };
 
@@ -39,9 +39,9 @@ namespace hyperelastic
       std::vector<double>
       damped_step(const Evaluation &e, const double m)
       {
-        const unsigned int          n = e.J.empty() ? 0 : e.J[0].size();
-        dealii::FullMatrix<double>  M(n, n);
-        dealii::Vector<double>      rhs(n), dx(n);
+        const unsigned int         n = e.J.empty() ? 0 : e.J[0].size();
+        dealii::FullMatrix<double> M(n, n);
+        dealii::Vector<double>     rhs(n), dx(n);
         for (unsigned int k = 0; k < e.r.size(); ++k)
           for (unsigned int i = 0; i < n; ++i)
             {
@@ -70,7 +70,7 @@ namespace hyperelastic
                         const LevenbergMarquardtSettings &settings)
     {
       LeastSquaresResult result;
-      result.x          = start;
+      result.x           = start;
       Evaluation current = evaluate(problem, start);
       if (!current.admissible)
         {
@@ -117,11 +117,11 @@ namespace hyperelastic
               result.x = trial;
               current  = next;
               m *= std::max(1. / 3., 1. - std::pow(2. * rho - 1., 3));
-              m  = std::max(m, 1e-15);
-              nu = 2.;
-              flat_steps =
-                fall <= settings.cost_tolerance * current.cost ? flat_steps + 1 :
-                                                                 0;
+              m          = std::max(m, 1e-15);
+              nu         = 2.;
+              flat_steps = fall <= settings.cost_tolerance * current.cost
+                             ? flat_steps + 1
+                             : 0;
               if (change <= settings.tolerance || flat_steps >= 3 ||
                   current.cost == 0.)
                 {

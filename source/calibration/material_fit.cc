@@ -40,8 +40,10 @@ namespace hyperelastic
             for (unsigned int i = 0; i < test.states.size(); ++i)
               {
                 const TestState &state    = test.states[i];
-                const Response   response = homogeneous_response(
-                  *material, derivatives, state, incompressible);
+                const Response   response = homogeneous_response(*material,
+                                                               derivatives,
+                                                               state,
+                                                               incompressible);
                 if (!std::isfinite(response.value))
                   return false;
                 // A relaxation test: N(t) = N_eq (1 + sum_j beta_j
@@ -63,8 +65,8 @@ namespace hyperelastic
                               chain[m][k];
                 for (unsigned int j = 0; j < decay.size(); ++j)
                   {
-                    const int w = constants.weight_columns()[j];
-                    const int t = constants.time_columns()[j];
+                    const int    w   = constants.weight_columns()[j];
+                    const int    t   = constants.time_columns()[j];
                     const double tau = series.times[j];
                     if (w >= 0)
                       row[w] += root_weight * decay[j] * response.value;
@@ -83,7 +85,7 @@ namespace hyperelastic
       standard_errors(const std::vector<double>              &r,
                       const std::vector<std::vector<double>> &J)
       {
-        const unsigned int n = J.empty() ? 0 : J[0].size();
+        const unsigned int  n = J.empty() ? 0 : J[0].size();
         std::vector<double> errors(n, std::nan(""));
         if (r.size() <= n)
           return errors;
@@ -112,22 +114,14 @@ namespace hyperelastic
     } // namespace
 
     FitResult
-    fit_material(const ModelConstants        &constants,
-                 const std::vector<TestData> &data,
-                 const bool                   incompressible,
-                 const unsigned int           starts)
+    multi_start_fit(const LeastSquaresProblem &problem,
+                    const std::vector<double> &origin,
+                    const unsigned int         starts)
     {
-      LeastSquaresProblem problem;
-      problem.evaluate = [&](const std::vector<double>        &x,
-                             std::vector<double>              &r,
-                             std::vector<std::vector<double>> &J) {
-        return residuals(constants, data, incompressible, x, r, J);
-      };
-      const std::vector<double>              origin = constants.start();
       std::mt19937                           random(2026);
       std::uniform_real_distribution<double> exponent(-std::log(3.),
                                                       std::log(3.));
-      FitResult best;
+      FitResult                              best;
       best.cost = std::numeric_limits<double>::infinity();
       for (unsigned int s = 0; s < std::max(starts, 1u); ++s)
         {
@@ -135,8 +129,7 @@ namespace hyperelastic
           if (s > 0)
             for (double &value : start)
               value *= std::exp(exponent(random));
-          const LeastSquaresResult result =
-            levenberg_marquardt(problem, start);
+          const LeastSquaresResult result = levenberg_marquardt(problem, start);
           best.iterations += result.iterations;
           best.starts_converged += result.converged ? 1 : 0;
           if (result.cost < best.cost)
@@ -149,9 +142,24 @@ namespace hyperelastic
         return best;
       std::vector<double>              r;
       std::vector<std::vector<double>> J;
-      residuals(constants, data, incompressible, best.values, r, J);
+      problem.evaluate(best.values, r, J);
       best.standard_errors = standard_errors(r, J);
       return best;
+    }
+
+    FitResult
+    fit_material(const ModelConstants        &constants,
+                 const std::vector<TestData> &data,
+                 const bool                   incompressible,
+                 const unsigned int           starts)
+    {
+      LeastSquaresProblem problem;
+      problem.evaluate = [&](const std::vector<double>        &x,
+                             std::vector<double>              &r,
+                             std::vector<std::vector<double>> &J) {
+        return residuals(constants, data, incompressible, x, r, J);
+      };
+      return multi_start_fit(problem, constants.start(), starts);
     }
 
     std::vector<TestData>
@@ -170,12 +178,12 @@ namespace hyperelastic
           for (const TestState &state : test.states)
             {
               const bool   biaxial = test.type == TestType::biaxial;
-              const double x =
-                biaxial ? state.stretch_2 :
-                test.type == TestType::relaxation ? state.time :
-                                                    state.stretch_1;
-              const auto key = std::make_pair(
-                state.component, biaxial ? state.stretch_1 : 0.);
+              const double x       = biaxial ? state.stretch_2
+                                     : test.type == TestType::relaxation
+                                       ? state.time
+                                       : state.stretch_1;
+              const auto   key =
+                std::make_pair(state.component, biaxial ? state.stretch_1 : 0.);
               auto found = groups.find(key);
               if (found == groups.end())
                 groups[key] = {x, x};
@@ -186,7 +194,7 @@ namespace hyperelastic
           for (const auto &[key, range] : groups)
             for (unsigned int i = 0; i <= n; ++i)
               {
-                TestState state = test.states[0];
+                TestState    state = test.states[0];
                 const double x =
                   range.first + (range.second - range.first) * i / n;
                 state.component = key.first;
@@ -221,8 +229,8 @@ namespace hyperelastic
               double factor = 1.;
               if (state.type == TestType::relaxation)
                 for (unsigned int j = 0; j < prony.weights.size(); ++j)
-                  factor += prony.weights[j] *
-                            std::exp(-state.time / prony.times[j]);
+                  factor +=
+                    prony.weights[j] * std::exp(-state.time / prony.times[j]);
               values.back().push_back(
                 factor *
                 homogeneous_response(material, nullptr, state, incompressible)

@@ -15,15 +15,6 @@ namespace hyperelastic
   {
     namespace
     {
-      std::string
-      listed(const std::vector<std::string> &names)
-      {
-        std::string text;
-        for (const std::string &name : names)
-          text += (text.empty() ? "" : ", ") + name;
-        return text;
-      }
-
       bool
       contains(const std::vector<std::string> &names, const std::string &name)
       {
@@ -47,11 +38,13 @@ namespace hyperelastic
     {
       std::ostringstream text;
       prm.print_parameters(text, dealii::ParameterHandler::PRM);
-      file_text = text.str();
+      file_text                         = text.str();
       const MaterialParameters material = parsed(prm);
       model_name                        = material.model;
       if (material.stiffness_warping)
-        reject("Material/Model", model_name, "is not a model of P(F): it "
+        reject("Material/Model",
+               model_name,
+               "is not a model of P(F): it "
                "cannot be fitted");
       file_prony.weights = material.viscoelasticity.weights;
       file_prony.times   = material.viscoelasticity.relaxation_times;
@@ -66,23 +59,23 @@ namespace hyperelastic
           pair = prm.get("Elastic constants");
           prm.leave_subsection();
         }
-      const auto model    = parsed(*handler({})).factory.create<3>();
-      const auto derivate = dynamic_cast<const ConstantDerivatives<3> *>(
-        model.get());
+      const auto model = parsed(*handler({})).factory.create<3>();
+      const auto derivate =
+        dynamic_cast<const ConstantDerivatives<3> *>(model.get());
       if (!derivate)
-        reject("Material/Model", model_name, "does not give the derivatives "
+        reject("Material/Model",
+               model_name,
+               "does not give the derivatives "
                "of its stress with respect to its constants, so it cannot be "
                "fitted");
       if (!pair.empty())
         {
-          all_entries = pair == "Lame" ?
-                          std::vector<std::string>{"Shear modulus",
-                                                   "Lame lambda"} :
-                        pair == "shear and bulk modulus" ?
-                          std::vector<std::string>{"Shear modulus",
-                                                   "Bulk modulus"} :
-                          std::vector<std::string>{"Young's modulus",
-                                                   "Poisson's ratio"};
+          all_entries =
+            pair == "Lame"
+              ? std::vector<std::string>{"Shear modulus", "Lame lambda"}
+            : pair == "shear and bulk modulus"
+              ? std::vector<std::string>{"Shear modulus", "Bulk modulus"}
+              : std::vector<std::string>{"Young's modulus", "Poisson's ratio"};
           volumetric_entry = all_entries[1];
         }
       else
@@ -98,8 +91,8 @@ namespace hyperelastic
       if (std::isinf(model->small_strain_moduli().lambda))
         {
           if (!incompressible)
-            reject("Material/" + (pair.empty() ? model_name + "/" :
-                                                 std::string()) +
+            reject("Material/" +
+                     (pair.empty() ? model_name + "/" : std::string()) +
                      volumetric_entry,
                    volumetric_text,
                    "an incompressible material needs Fit/Incompressible = "
@@ -111,8 +104,8 @@ namespace hyperelastic
 
     void
     ModelConstants::select_free(const std::vector<std::string> &free_names,
-                                const bool incompressible,
-                                const bool relaxation_data)
+                                const bool                      incompressible,
+                                const bool                      relaxation_data)
     {
       const bool        viscoelastic = !file_prony.weights.empty();
       bool              weights = false, times = false;
@@ -121,16 +114,23 @@ namespace hyperelastic
         {
           const bool prony = name == "Weights" || name == "Relaxation times";
           if (prony && !viscoelastic)
-            reject(entry, name, "needs Material/Viscoelasticity with "
+            reject(entry,
+                   name,
+                   "needs Material/Viscoelasticity with "
                    "starting Weights and Relaxation times");
           if (!prony && !contains(all_entries, name))
-            reject(entry, name, "is not a constant of the " + model_name +
-                   " model" + (pair.empty() ? "" :
-                   " with 'Elastic constants = " + pair + "'") +
-                   "; its constants are " + listed(all_entries) +
-                   (viscoelastic ? ", Weights, Relaxation times" : ""));
+            reject(entry,
+                   name,
+                   "is not a constant of the " + model_name + " model" +
+                     (pair.empty()
+                        ? ""
+                        : " with 'Elastic constants = " + pair + "'") +
+                     "; its constants are " + listed(all_entries) +
+                     (viscoelastic ? ", Weights, Relaxation times" : ""));
           if (incompressible && name == volumetric_entry)
-            reject(entry, name, "is the volumetric constant, which cannot "
+            reject(entry,
+                   name,
+                   "is the volumetric constant, which cannot "
                    "be free with Fit/Incompressible = true");
           if (contains(free, name) || (name == "Weights" && weights) ||
               (name == "Relaxation times" && times))
@@ -149,9 +149,10 @@ namespace hyperelastic
               free.push_back(name);
           weights = times = viscoelastic && relaxation_data;
         }
-      value_names = free;
-      const auto add = [&](const bool is_free, const std::string &name,
-                           std::vector<int> &columns) {
+      value_names    = free;
+      const auto add = [&](const bool         is_free,
+                           const std::string &name,
+                           std::vector<int>  &columns) {
         for (unsigned int j = 0; j < file_prony.weights.size(); ++j)
           {
             columns.push_back(is_free ? int(value_names.size()) : -1);
@@ -187,7 +188,8 @@ namespace hyperelastic
       PronySeries series = file_prony;
       for (unsigned int j = 0; j < series.weights.size(); ++j)
         {
-          if (weight_column[j] >= 0 && unsigned(weight_column[j]) < values.size())
+          if (weight_column[j] >= 0 &&
+              unsigned(weight_column[j]) < values.size())
             series.weights[j] = values[weight_column[j]];
           if (time_column[j] >= 0 && unsigned(time_column[j]) < values.size())
             series.times[j] = values[time_column[j]];
@@ -275,8 +277,9 @@ namespace hyperelastic
     }
 
     std::unique_ptr<Material<3>>
-    ModelConstants::material_and_chain(const std::vector<double>        &values,
-                                       std::vector<std::vector<double>> &d) const
+    ModelConstants::material_and_chain(
+      const std::vector<double>        &values,
+      std::vector<std::vector<double>> &d) const
     {
       const PronySeries series = prony(values);
       for (unsigned int j = 0; j < series.weights.size(); ++j)
@@ -315,9 +318,8 @@ namespace hyperelastic
       // Rows mu, lambda.
       std::vector<std::vector<double>> d(2, std::vector<double>(free.size()));
       const bool   engineering = all_entries[0] == "Young's modulus";
-      const double E = engineering ? std::stod(get(prm, all_entries[0])) : 0.;
-      const double nu =
-        engineering ? std::stod(get(prm, all_entries[1])) : 0.;
+      const double E  = engineering ? std::stod(get(prm, all_entries[0])) : 0.;
+      const double nu = engineering ? std::stod(get(prm, all_entries[1])) : 0.;
       for (unsigned int k = 0; k < free.size(); ++k)
         {
           const std::string &name = free[k];
@@ -344,14 +346,15 @@ namespace hyperelastic
     }
 
     void
-    ModelConstants::write_material_block(std::ostream              &out,
-                                         const std::vector<double> &values) const
+    ModelConstants::write_material_block(
+      std::ostream              &out,
+      const std::vector<double> &values) const
     {
       const auto prm   = handler(values);
       const auto value = [&](const std::string &entry) {
-        return entry == volumetric_entry && !volumetric_stand_in.empty() ?
-                 volumetric_text :
-                 get(*prm, entry);
+        return entry == volumetric_entry && !volumetric_stand_in.empty()
+                 ? volumetric_text
+                 : get(*prm, entry);
       };
       out << "subsection Material\n"
           << "  set Model = " << model_name << "\n";

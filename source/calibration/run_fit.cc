@@ -49,14 +49,12 @@ namespace hyperelastic
           values += test.measured.size();
         if (values < constants.names().size())
           {
-            std::string names;
-            for (const std::string &name : constants.names())
-              names += (names.empty() ? "" : ", ") + name;
             reject("Fit/Free constants",
-                   names,
+                   listed(constants.names()),
                    std::to_string(constants.names().size()) +
                      " free constants need at least as many measured values; "
-                     "the data files have " + std::to_string(values));
+                     "the data files have " +
+                     std::to_string(values));
           }
       }
 
@@ -81,7 +79,8 @@ namespace hyperelastic
       write_files(const FitParameters  &parameters,
                   const FitReport      &report,
                   const ModelConstants &constants,
-                  const Material<3>    &material)
+                  const Material<3>    &material,
+                  const bool            curves)
       {
         std::filesystem::create_directories(parameters.directory);
         const std::string base =
@@ -90,67 +89,119 @@ namespace hyperelastic
         write_material_file(prm_file, report, constants);
         std::ofstream csv(base + "_fit.csv");
         write_fit_csv(csv, report);
-        const std::vector<TestData> curves = curve_states(parameters.data);
-        std::ofstream               curve(base + "_curve.csv");
-        write_curve_csv(curve,
-                        curves,
-                        model_values(material,
-                                     constants.prony(report.result.values),
-                                     curves,
-                                     parameters.incompressible));
-        if (!prm_file || !csv || !curve)
+        if (curves)
+          {
+            const std::vector<TestData> states = curve_states(parameters.data);
+            std::ofstream               curve(base + "_curve.csv");
+            write_curve_csv(curve,
+                            states,
+                            model_values(material,
+                                         constants.prony(report.result.values),
+                                         states,
+                                         parameters.incompressible));
+            if (!curve)
+              throw InputError("cannot write the fit's files in '" +
+                               parameters.directory + "'");
+          }
+        if (!prm_file || !csv)
           throw InputError("cannot write the fit's files in '" +
                            parameters.directory + "'");
-        std::cout << "Wrote " << base << "_material.prm, " << base
-                  << "_fit.csv and " << base
-                  << "_curve.csv (picture: python3 scripts/plot_fit.py " << base
+        std::cout << "Wrote " << base << "_material.prm, " << base << "_fit.csv"
+                  << (curves ? ", " + base + "_curve.csv" : "")
+                  << " (picture: python3 scripts/plot_fit.py " << base
                   << "_fit.csv)" << std::endl;
       }
     } // namespace
 
     void
-    run_fit(const std::string &fit_file, const MPI_Comm comm)
+    read_fit_file(const std::string        &fit_file,
+                  dealii::ParameterHandler &prm,
+                  FitParameters            &parameters)
     {
-      const auto               begin = std::chrono::steady_clock::now();
-      dealii::ParameterHandler prm;
       FitParameters::declare(prm);
       read_parameter_file(fit_file, prm);
-      const auto                      slash = fit_file.rfind('/');
-      FitParameters                   parameters;
-      std::unique_ptr<ModelConstants> fitted;
+      const auto slash = fit_file.rfind('/');
       try
         {
-          parameters.parse(prm,
-                           slash == std::string::npos ?
-                             "." :
-                             fit_file.substr(0, slash));
+          parameters.parse(
+            prm, slash == std::string::npos ? "." : fit_file.substr(0, slash));
+        }
+      catch (const InputError &e)
+        {
+          // A data file's errors name that file and line already.
+          const std::string what            = e.what();
+          bool              names_data_file = false;
+          for (const char *start : {"test data file",
+                                    "scene data file",
+                                    "cannot open test data file",
+                                    "cannot open scene data file"})
+            names_data_file = names_data_file || what.rfind(start, 0) == 0;
+          throw InputError(
+            names_data_file ? what : "fit file '" + fit_file + "': " + what);
+        }
+    }
+
+    std::unique_ptr<ModelConstants>
+    fit_constants(dealii::ParameterHandler    &prm,
+                  const FitParameters         &parameters,
+                  const std::vector<TestData> &data,
+                  const bool                   incompressible,
+                  const std::string           &file)
+    {
+      std::unique_ptr<ModelConstants> constants;
+      try
+        {
           bool relaxation = false;
-          for (const TestData &test : parameters.data)
+          for (const TestData &test : data)
             relaxation = relaxation || test.type == TestType::relaxation;
-          fitted = std::make_unique<ModelConstants>(prm,
-                                                    parameters.free_constants,
-                                                    parameters.incompressible,
-                                                    relaxation);
+          constants = std::make_unique<ModelConstants>(
+            prm, parameters.free_constants, incompressible, relaxation);
           if (relaxation &&
-              fitted->prony(fitted->start()).weights.empty())
+              constants->prony(constants->start()).weights.empty())
             reject("Material/Viscoelasticity/Weights",
                    "",
                    "a relaxation test fits the Prony series: give starting "
                    "Weights and Relaxation times");
-          check_enough_data(parameters.data, *fitted);
+          check_enough_data(data, *constants);
         }
       catch (const InputError &e)
         {
-          const std::string what = e.what();
-          throw InputError(what.find("test data file") == 0 ?
-                             what :
-                             "fit file '" + fit_file + "': " + what);
+          throw InputError(file + ": " + e.what());
         }
+      if (!constants->material(constants->start()))
+        throw InputError(file + ": the Material subsection's constants are "
+                                "not admissible");
+      return constants;
+    }
+
+    void
+    report_fit(const FitParameters  &parameters,
+               const FitReport      &report,
+               const ModelConstants &constants,
+               const Material<3>    &material,
+               const bool            curves,
+               const MPI_Comm        comm)
+    {
+      if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
+        return;
+      for (const std::string &line : report.summary())
+        std::cout << line << "\n";
+      write_files(parameters, report, constants, material, curves);
+    }
+
+    void
+    fit_tests(dealii::ParameterHandler &prm,
+              const FitParameters      &parameters,
+              const std::string        &fit_file,
+              const MPI_Comm            comm)
+    {
+      const auto            begin     = std::chrono::steady_clock::now();
+      const auto            fitted    = fit_constants(prm,
+                                        parameters,
+                                        parameters.data,
+                                        parameters.incompressible,
+                                        "fit file '" + fit_file + "'");
       const ModelConstants &constants = *fitted;
-      if (!constants.material(constants.start()))
-        throw InputError("fit file '" + fit_file +
-                         "': the Material subsection's constants are not "
-                         "admissible");
 
       FitReport report;
       report.model          = constants.model();
@@ -168,7 +219,7 @@ namespace hyperelastic
                          "start (check the data's stretches and the "
                          "starting constants)");
       const auto material = constants.material(report.result.values);
-      report.fitted = model_values(*material,
+      report.fitted       = model_values(*material,
                                    constants.prony(report.result.values),
                                    parameters.data,
                                    parameters.incompressible);
@@ -178,14 +229,10 @@ namespace hyperelastic
                                            parameters.incompressible,
                                            parameters.stability_lowest,
                                            parameters.stability_highest);
-      report.seconds = std::chrono::duration<double>(
-                         std::chrono::steady_clock::now() - begin)
-                         .count();
-      if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
-        return;
-      for (const std::string &line : report.summary())
-        std::cout << line << "\n";
-      write_files(parameters, report, constants, *material);
+      report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin)
+          .count();
+      report_fit(parameters, report, constants, *material, true, comm);
     }
   } // namespace calibration
 } // namespace hyperelastic

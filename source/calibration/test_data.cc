@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/calibration/test_data.h>
 
 #include <algorithm>
@@ -14,15 +15,6 @@ namespace hyperelastic
   {
     namespace
     {
-      std::string
-      joined(const std::vector<std::string> &names)
-      {
-        std::string text;
-        for (const std::string &name : names)
-          text += (text.empty() ? "" : ", ") + name;
-        return text;
-      }
-
       std::vector<std::string>
       split_row(const std::string &line)
       {
@@ -58,7 +50,7 @@ namespace hyperelastic
               const double               held_stretch,
               const std::string         &where)
       {
-        const bool shear = data.type == TestType::simple_shear;
+        const bool shear      = data.type == TestType::simple_shear;
         const bool relaxation = data.type == TestType::relaxation;
         if (!shear && !relaxation && !(v[0] > 0.))
           throw InputError(where + ": " + required_columns(data.type)[0] +
@@ -96,19 +88,19 @@ namespace hyperelastic
     {
       switch (type)
         {
-          case TestType::biaxial:
-            return {"stretch_1",
-                    "stretch_2",
-                    "nominal_stress_1",
-                    "nominal_stress_2"};
-          case TestType::simple_shear:
-            return {"shear", "nominal_shear_stress"};
-          case TestType::volumetric:
-            return {"J", "pressure"};
-          case TestType::relaxation:
-            return {"time", "nominal_stress"};
-          default:
-            return {"stretch", "nominal_stress"};
+        case TestType::biaxial:
+          return {"stretch_1",
+                  "stretch_2",
+                  "nominal_stress_1",
+                  "nominal_stress_2"};
+        case TestType::simple_shear:
+          return {"shear", "nominal_shear_stress"};
+        case TestType::volumetric:
+          return {"J", "pressure"};
+        case TestType::relaxation:
+          return {"time", "nominal_stress"};
+        default:
+          return {"stretch", "nominal_stress"};
         }
     }
 
@@ -121,8 +113,8 @@ namespace hyperelastic
       if (!in)
         throw InputError("cannot open test data file '" + file + "'");
       TestData data;
-      data.type = type;
-      data.file = file;
+      data.type                             = type;
+      data.file                             = file;
       const std::vector<std::string> wanted = required_columns(type);
       std::vector<unsigned int>      column;
       std::string                    line;
@@ -132,9 +124,8 @@ namespace hyperelastic
           const std::string text = dealii::Utilities::trim(line);
           if (text.empty() || text[0] == '#')
             continue;
-          const std::string where =
-            "test data file '" + file + "' line " +
-            std::to_string(number_of_line);
+          const std::string where = "test data file '" + file + "' line " +
+                                    std::to_string(number_of_line);
           const std::vector<std::string> fields = split_row(text);
           if (column.empty())
             {
@@ -146,8 +137,7 @@ namespace hyperelastic
                     throw InputError(where + ": the header has no column '" +
                                      name + "' (a " + test_type_name(type) +
                                      " test needs the columns " +
-                                     joined(wanted) +
-                                     ")");
+                                     listed(wanted) + ")");
                   column.push_back(found - fields.begin());
                 }
               continue;
@@ -165,6 +155,60 @@ namespace hyperelastic
       if (data.states.empty())
         throw InputError("test data file '" + file + "' has no data rows" +
                          (column.empty() ? " (and no header)" : ""));
+      return data;
+    }
+    TestData
+    read_scene_data(const std::string &file, std::string &column)
+    {
+      std::ifstream in(file);
+      if (!in)
+        throw InputError("cannot open scene data file '" + file + "'");
+      TestData data;
+      data.type = TestType::scene;
+      data.file = file;
+      column.clear();
+      std::string  line;
+      unsigned int t_column = 0, y_column = 0;
+      for (unsigned int number_of_line = 1; std::getline(in, line);
+           ++number_of_line)
+        {
+          const std::string text = dealii::Utilities::trim(line);
+          if (text.empty() || text[0] == '#')
+            continue;
+          const std::string where = "scene data file '" + file + "' line " +
+                                    std::to_string(number_of_line);
+          const std::vector<std::string> fields = split_row(text);
+          if (column.empty())
+            {
+              const auto t = std::find(fields.begin(),
+                                       fields.end(),
+                                       std::string("load_factor"));
+              if (t == fields.end() || fields.size() < 2)
+                throw InputError(where +
+                                 ": the header needs the columns "
+                                 "load_factor and one column of the scene's "
+                                 "CSV (for example reaction_2_z)");
+              t_column = t - fields.begin();
+              y_column = t_column == 0 ? 1 : 0;
+              column   = fields[y_column];
+              continue;
+            }
+          if (std::max(t_column, y_column) >= fields.size())
+            throw InputError(where + ": " + std::to_string(fields.size()) +
+                             " values, the header has more columns");
+          TestState state;
+          state.type      = TestType::scene;
+          state.stretch_1 = number(fields[t_column], where);
+          if (!(state.stretch_1 > 0.) ||
+              (!data.states.empty() &&
+               !(state.stretch_1 > data.states.back().stretch_1)))
+            throw InputError(where + ": load factors must be positive and "
+                                     "strictly increasing");
+          data.states.push_back(state);
+          data.measured.push_back(number(fields[y_column], where));
+        }
+      if (data.states.empty())
+        throw InputError("scene data file '" + file + "' has no data rows");
       return data;
     }
   } // namespace calibration

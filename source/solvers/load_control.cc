@@ -55,16 +55,13 @@ namespace hyperelastic
       system.store_converged_state();
     while (t < end)
       {
-        // Land exactly on t = end (no sliver of a last step): a remainder
-        // below a millionth of the nominal step is the round-off of the
-        // summed steps (500 steps of 0.02 end at 9.99999999999988, and a
-        // last step of 1.2e-13 would follow: issue 41).
-        const double t_next =
-          (t + increment > end - 1e-6 * nominal) ? end : t + increment;
+        const double t_next = next_load_factor();
         // The increment as halved and doubled, not t_next - t: summed load
         // factors carry round-off, and a cut-back to exactly 1/16 of the
-        // nominal increment must compare as 1/16 (snap steps, the CSV).
-        const double attempted = t_next == end ? end - t : increment;
+        // nominal increment must compare as 1/16 (snap steps, the CSV). A
+        // step shortened to the end or a stop is t_next - t.
+        const double attempted =
+          t_next == end || t_next != t + increment ? t_next - t : increment;
         print_header(t_next,
                      attempted,
                      next == Attempt::snap ? ", snap step" : "");
@@ -83,6 +80,20 @@ namespace hyperelastic
         next = Attempt::step;
         accept(result, t_next, attempted);
       }
+  }
+
+  double
+  LoadControlLoop::next_load_factor() const
+  {
+    // Land exactly on t = end (no sliver of a last step): a remainder
+    // below a millionth of the nominal step is the round-off of the summed
+    // steps (500 steps of 0.02 end at 9.99999999999988, and a last step of
+    // 1.2e-13 would follow: issue 41). The same for each stop.
+    const double sliver = 1e-6 * nominal;
+    for (const double stop : parameters.stops)
+      if (stop > t + sliver && stop < end && t + increment > stop - sliver)
+        return stop;
+    return t + increment > end - sliver ? end : t + increment;
   }
 
   bool

@@ -117,6 +117,16 @@ namespace hyperelastic
       "the tangent predictor on ramped loads, and can cost more under large "
       "prescribed rotations (a rotation extrapolated linearly stretches), "
       "hence 'none' by default.");
+    prm.declare_entry(
+      "Stop at load factors",
+      "",
+      List(Double()),
+      "Load control: load factors (in dynamics: times) a step lands on "
+      "exactly, as the last step lands on 1: the step that would pass one "
+      "ends at it, before and after cut-backs. Strictly increasing and "
+      "positive; those at or beyond the end are ignored. For a CSV row at "
+      "given load factors (a measured curve's, as 'hyperelastic --fit' "
+      "with a scene uses). Empty: none.");
     prm.leave_subsection();
   }
 
@@ -133,6 +143,17 @@ namespace hyperelastic
     method = prm.get("Method") == "arc length" ? LoadControl::arc_length
                                                : LoadControl::load_control;
     maximum_load_factor = prm.get_double("Maximum load factor");
+    stops.clear();
+    for (const std::string &x :
+         dealii::Utilities::split_string_list(prm.get("Stop at load factors")))
+      {
+        stops.push_back(dealii::Utilities::string_to_double(x));
+        if (!std::isfinite(stops.back()) || !(stops.back() > 0.) ||
+            (stops.size() > 1 && !(stops.back() > stops[stops.size() - 2])))
+          reject("Load stepping/Stop at load factors",
+                 prm.get("Stop at load factors"),
+                 "must be positive, finite and strictly increasing");
+      }
     maximum_steps       = prm.get_integer("Maximum steps");
     if (!std::isfinite(maximum_load_factor) || !(maximum_load_factor > 0.))
       reject("Load stepping/Maximum load factor",

@@ -181,6 +181,15 @@ namespace hyperelastic
       return !stiff_terms.empty();
     }
 
+    /// d f_int / dc_k of the material part for each constant of the model
+    /// (GenericAssembler::constant_forces), where the material part is the
+    /// generic FEValues one (the displacement formulation, P1 or P2) and
+    /// no other term depends on the constants (none is stiff: contact's
+    /// automatic barrier stiffness follows the moduli); empty otherwise.
+    /// Collective.
+    std::vector<VectorType>
+    constant_forces(const VectorType &u, const VectorType &like) const;
+
     /// The owned dofs that the stiff terms' last stiffness wrote, in a set
     /// of @p n_dofs (StiffTerm::add_stiff_dofs over every such term).
     dealii::IndexSet

@@ -41,6 +41,14 @@ namespace hyperelastic
     void
     accept_step(const VectorType &u) override;
 
+    /// d f_int / dc_k = int dP/dc_k(F) grad N_a dV for each constant k of
+    /// the model (materials/constant_derivatives.h), owned rows, each
+    /// vector laid out like @p like; empty if a point's model does not
+    /// give them (on any rank). For sensitivities (a fit through a scene).
+    /// Collective.
+    std::vector<VectorType>
+    constant_forces(const VectorType &u, const VectorType &like) const;
+
   protected:
     const PointMaterials<dim> *
     point_materials() const override

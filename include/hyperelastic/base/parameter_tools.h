@@ -47,6 +47,10 @@ namespace hyperelastic
                    const std::string        &section,
                    const std::string        &name);
 
+  /// "a, b, c": @p names joined by commas (for messages).
+  std::string
+  listed(const std::vector<std::string> &names);
+
   /// Splits "a; b; c" into trimmed expressions; an all-blank string gives {}.
   std::vector<std::string>
   split_expressions(const std::string &text);

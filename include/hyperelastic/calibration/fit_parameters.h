@@ -7,6 +7,8 @@
 //   Starts             how many starts the multi-start fit makes
 //   Stability range    the stretches over which Drucker stability is checked
 //   subsection Data k  (k = 1 ... 8) Test, File, Weight: one test each
+//   Scene, Scene data  a fit through a whole scene instead (the scene's
+//                      own Material, a measured CSV column at load factors)
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
@@ -25,12 +27,14 @@ namespace hyperelastic
       static constexpr unsigned int max_data_sets = 8;
 
       std::vector<std::string> free_constants;
-      bool                     incompressible = true;
-      unsigned int             starts         = 8;
+      bool                     incompressible    = true;
+      unsigned int             starts            = 8;
       double                   stability_lowest  = 0.1;
       double                   stability_highest = 10.;
       std::vector<TestData>    data;
-      std::string              directory, base_name;
+      /// A fit through a scene: its file, and the data's column.
+      std::string scene, scene_column;
+      std::string directory, base_name;
 
       /// Declares Material, Output (Directory, Base name) and Fit.
       static void

@@ -4,11 +4,11 @@
 // with this summary as its header) and <Base name>_fit.csv (one row per
 // measured value: data, test, stretch_1, stretch_2, measured, fitted,
 // component, time), and <Base name>_curve.csv (the fitted model along
-// each test's range, for drawing). stretch_1 is the data's first column (stretch, shear,
-// J; a relaxation test's held stretch), stretch_2 the second stretch
-// (biaxial) or the fitted state's y stretch, component 1 or 2 the stress of
-// a biaxial point, time a relaxation test's. scripts/plot_fit.py draws the
-// CSV.
+// each test's range, for drawing). stretch_1 is the data's first column
+// (stretch, shear, J; a relaxation test's held stretch), stretch_2 the second
+// stretch (biaxial) or the fitted state's y stretch, component 1 or 2 the
+// stress of a biaxial point, time a relaxation test's. scripts/plot_fit.py
+// draws the CSV.
 #pragma once
 
 #include <hyperelastic/calibration/drucker_stability.h>
@@ -41,11 +41,13 @@ namespace hyperelastic
       std::vector<std::string>         names;
       FitResult                        result;
       std::vector<TestData>            data;
-      std::vector<std::vector<double>> fitted;     ///< per test, per value
-      std::vector<std::vector<double>> stretch_2;  ///< per test, per value
+      std::vector<std::vector<double>> fitted;    ///< per test, per value
+      std::vector<std::vector<double>> stretch_2; ///< per test, per value
       std::vector<StabilityVerdict>    stability;
       bool                             incompressible = true;
       double                           seconds        = 0.;
+      /// Lines after the first of the summary (a scene fit's method).
+      std::vector<std::string> notes;
 
       /// The summary, one line each (no trailing newline).
       std::vector<std::string>

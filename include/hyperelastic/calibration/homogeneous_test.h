@@ -40,7 +40,8 @@ namespace hyperelastic
       simple_shear,
       biaxial,
       volumetric,
-      relaxation
+      relaxation,
+      scene ///< a whole scene's CSV column (no homogeneous response)
     };
 
     /// "uniaxial | equibiaxial | planar | simple shear | biaxial |
@@ -60,11 +61,11 @@ namespace hyperelastic
     /// shear g, for a volumetric test J) and which stress of a biaxial test.
     struct TestState
     {
-      TestType     type       = TestType::uniaxial;
-      double       stretch_1  = 1.;
-      double       stretch_2  = 1.; ///< biaxial only
-      unsigned int component  = 0;  ///< biaxial: 0 = P_xx, 1 = P_yy
-      double       time       = 0.; ///< relaxation: time since the jump
+      TestType     type      = TestType::uniaxial;
+      double       stretch_1 = 1.;
+      double       stretch_2 = 1.; ///< biaxial only
+      unsigned int component = 0;  ///< biaxial: 0 = P_xx, 1 = P_yy
+      double       time      = 0.; ///< relaxation: time since the jump
     };
 
     /// The model's measured quantity at @p state, and its derivatives with

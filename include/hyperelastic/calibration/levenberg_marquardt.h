@@ -19,16 +19,16 @@ namespace hyperelastic
     {
       /// r(x) and J = dr/dx (rows: residuals); false where x is not
       /// admissible (r and J are then ignored).
-      std::function<bool(const std::vector<double>              &x,
-                         std::vector<double>                    &r,
-                         std::vector<std::vector<double>>       &J)>
+      std::function<bool(const std::vector<double>        &x,
+                         std::vector<double>              &r,
+                         std::vector<std::vector<double>> &J)>
         evaluate;
     };
 
     struct LeastSquaresResult
     {
       std::vector<double> x;
-      double              cost = 0.; ///< 1/2 |r|^2
+      double              cost       = 0.; ///< 1/2 |r|^2
       unsigned int        iterations = 0;
       bool                converged  = false;
     };

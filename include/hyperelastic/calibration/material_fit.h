@@ -15,6 +15,7 @@
 // step.
 #pragma once
 
+#include <hyperelastic/calibration/levenberg_marquardt.h>
 #include <hyperelastic/calibration/model_constants.h>
 #include <hyperelastic/calibration/test_data.h>
 
@@ -26,12 +27,20 @@ namespace hyperelastic
   {
     struct FitResult
     {
-      std::vector<double> values;          ///< the free entries
-      std::vector<double> standard_errors; ///< from (J^T J)^-1 s^2
-      double              cost = 0.;       ///< 1/2 the weighted squares
+      std::vector<double> values;                ///< the free entries
+      std::vector<double> standard_errors;       ///< from (J^T J)^-1 s^2
+      double              cost             = 0.; ///< 1/2 the weighted squares
       unsigned int        starts_converged = 0;
       unsigned int        iterations       = 0; ///< over all starts
     };
+
+    /// Levenberg-Marquardt on @p problem from @p origin and Starts - 1
+    /// points around it (each value times a factor in [1/3, 3], the same
+    /// sequence on every rank and run): the best, with standard errors.
+    FitResult
+    multi_start_fit(const LeastSquaresProblem &problem,
+                    const std::vector<double> &origin,
+                    unsigned int               starts);
 
     FitResult
     fit_material(const ModelConstants        &constants,

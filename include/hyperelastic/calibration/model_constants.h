@@ -101,23 +101,23 @@ namespace hyperelastic
     private:
       /// The parameter file's entries (PRM text), read into every trial
       /// handler.
-      std::string               file_text;
-      std::string               model_name;
+      std::string file_text;
+      std::string model_name;
       /// Lame-based: 'Material/Elastic constants'; empty otherwise.
-      std::string               pair;
+      std::string pair;
       /// Every entry of the model (its subsection's, or the pair), and the
       /// volumetric one among them.
-      std::vector<std::string>  all_entries;
-      std::string               volumetric_entry;
+      std::vector<std::string> all_entries;
+      std::string              volumetric_entry;
       /// The free entries of the model, and every value's name.
-      std::vector<std::string>  free, value_names;
+      std::vector<std::string> free, value_names;
       /// The volumetric entry's text in the file, and a finite stand-in
       /// when it is 'inf' (incompressible fits: J = 1 leaves it idle).
-      std::string               volumetric_text, volumetric_stand_in;
+      std::string volumetric_text, volumetric_stand_in;
       /// The file's Prony series and duration text; the free columns.
-      PronySeries               file_prony;
-      std::string               duration_text;
-      std::vector<int>          weight_column, time_column;
+      PronySeries      file_prony;
+      std::string      duration_text;
+      std::vector<int> weight_column, time_column;
 
       /// Sorts the free names into the model's entries and the Prony lists.
       void

@@ -21,10 +21,10 @@ namespace hyperelastic
   {
     struct TestData
     {
-      unsigned int           index = 0; ///< k of the subsection Fit/Data k
-      TestType               type  = TestType::uniaxial;
-      std::string            file;
-      double                 weight = 1.;
+      unsigned int index = 0; ///< k of the subsection Fit/Data k
+      TestType     type  = TestType::uniaxial;
+      std::string  file;
+      double       weight = 1.;
       /// One entry per measured stress value (a biaxial point gives two).
       std::vector<TestState> states;
       std::vector<double>    measured;
@@ -42,5 +42,11 @@ namespace hyperelastic
     read_test_data(const std::string &file,
                    TestType           type,
                    double             held_stretch = 1.);
+    /// A scene fit's data (Fit/Scene data): columns load_factor and one
+    /// CSV column of the scene, whose name goes to @p column; load factors
+    /// positive and strictly increasing. States of type scene with the
+    /// load factor as stretch_1. InputErrors name the file and line.
+    TestData
+    read_scene_data(const std::string &file, std::string &column);
   } // namespace calibration
 } // namespace hyperelastic

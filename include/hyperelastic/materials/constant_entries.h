@@ -11,6 +11,7 @@
 #include <iomanip>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace hyperelastic
 {
@@ -38,6 +39,18 @@ namespace hyperelastic
              prm.get("Bulk modulus"),
              "must be positive");
     return kappa;
+  }
+
+  /// The names of a constants struct's scene entries (its entries()), in
+  /// their order: a model's ConstantDerivatives::constant_names().
+  template <typename Constants>
+  std::vector<std::string>
+  entry_names(const Constants &constants)
+  {
+    std::vector<std::string> names;
+    for (const auto &entry : constants.entries())
+      names.push_back(entry.first);
+    return names;
   }
 
   /// @p x with 17 significant digits: parses back to the same double.

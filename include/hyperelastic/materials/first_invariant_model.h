@@ -45,6 +45,7 @@
 #pragma once
 
 #include <hyperelastic/materials/constant_derivatives.h>
+#include <hyperelastic/materials/constant_entries.h>
 #include <hyperelastic/materials/evaluated_material.h>
 #include <hyperelastic/materials/volumetric_split.h>
 
@@ -133,10 +134,7 @@ namespace hyperelastic
     std::vector<std::string>
     constant_names() const override
     {
-      std::vector<std::string> names;
-      for (const auto &entry : constants.entries())
-        names.push_back(entry.first);
-      return names;
+      return entry_names(constants);
     }
 
     /// dW'/dc D per law constant, then 1/2 (J^2 - 1) G (the bulk modulus);

@@ -218,10 +218,7 @@ namespace hyperelastic
     std::vector<std::string>
     constant_names() const override
     {
-      std::vector<std::string> names;
-      for (const auto &entry : constants.entries())
-        names.push_back(entry.first);
-      return names;
+      return entry_names(constants);
     }
 
     /// In the order mu1, alpha1, ..., alpha3, Bulk modulus, from one

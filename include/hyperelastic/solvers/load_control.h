@@ -54,6 +54,12 @@ namespace hyperelastic
       snap  ///< a snap step: the nominal increment, the snap budget
     };
 
+    /// The next step's end: t + increment, or the end or the next stop
+    /// ('Load stepping/Stop at load factors') that it would pass or nearly
+    /// reach.
+    double
+    next_load_factor() const;
+
     /// One attempt from the last converged state to @p t_next (increment
     /// @p attempted): Newton's solve, a snap step's with its sub-steps.
     /// Returns false where snap sub-steps took the snap over (their states

@@ -3,6 +3,8 @@
 // checked (an invalid value is an InputError naming the entry).
 #pragma once
 
+#include <vector>
+
 #include <deal.II/base/parameter_handler.h>
 
 namespace hyperelastic
@@ -38,6 +40,9 @@ namespace hyperelastic
     /// Start each load step after the first from the secant extrapolation
     /// of the last two converged states (if admissible).
     bool secant_predictor = false;
+    /// 'Stop at load factors': load control lands a step exactly on each
+    /// (strictly increasing, positive), whatever the cut-backs before.
+    std::vector<double> stops;
 
     static void
     declare(ParameterHandler &prm);
