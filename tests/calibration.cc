@@ -34,6 +34,10 @@ namespace
     std::vector<std::string>                    free; // fitted
     std::vector<TestType>                       tests;
     bool                                        incompressible = true;
+    /// More entries of the model's subsection (fibre directions).
+    std::string extra = "";
+    /// The data's stretches: 1 + reach (l - 1) of states_of()'s.
+    double reach = 1.;
   };
 
   std::vector<ModelCase>
@@ -104,6 +108,22 @@ namespace
        {"mu1", "alpha1", "mu2", "alpha2", "mu3", "alpha3"},
        {TestType::uniaxial, TestType::equibiaxial, TestType::planar},
        true},
+      // Two fibre families at +-30 degrees in the x-y plane: biaxial and
+      // equibiaxial data (a uniaxial test would need unequal lateral
+      // stretches).
+      {"Holzapfel-Gasser-Ogden",
+       "",
+       {{"Shear modulus", 0.5},
+        {"k1", 2.},
+        {"k2", 0.8},
+        {"Dispersion", 0.1},
+        {"Bulk modulus", 50.}},
+       {"Shear modulus", "k1", "k2", "Dispersion"},
+       {TestType::biaxial, TestType::equibiaxial},
+       true,
+       "    set Fibre direction 1 = 0.8660254037844386; 0.5; 0\n"
+       "    set Fibre direction 2 = 0.8660254037844386; -0.5; 0\n",
+       0.4},
       // Compressible Ogden with the bulk modulus free.
       {"Ogden",
        "",
@@ -141,7 +161,7 @@ namespace
         out << "    set " << name << " = " << v << "\n";
       }
     if (c.pair.empty())
-      out << "  end\n";
+      out << c.extra << "  end\n";
     out << "end\n";
     return out.str();
   }
@@ -153,16 +173,18 @@ namespace
     prm.parse_input_from_string(text);
   }
 
-  /// Stretches (or shears, or J) for a test of @p type.
+  /// Stretches (or shears, or J) for a test of @p type, their distance
+  /// from 1 times @p reach.
   std::vector<TestState>
-  states_of(const TestType type)
+  states_of(const TestType type, const double reach = 1.)
   {
     std::vector<TestState> states;
     const auto add = [&](const double s1, const double s2, unsigned int c) {
       TestState state;
-      state.type      = type;
-      state.stretch_1 = s1;
-      state.stretch_2 = s2;
+      state.type = type;
+      state.stretch_1 =
+        type == TestType::simple_shear ? reach * s1 : 1. + reach * (s1 - 1.);
+      state.stretch_2 = 1. + reach * (s2 - 1.);
       state.component = c;
       states.push_back(state);
     };
@@ -211,7 +233,7 @@ namespace
     const ModelConstants      constants(prm, free, incompressible);
     const std::vector<double> values = constants.start();
     double                    worst  = 0.;
-    for (const TestState &state : states_of(type))
+    for (const TestState &state : states_of(type, c.reach))
       {
         std::vector<std::vector<double>> chain;
         const auto material = constants.material_and_chain(values, chain);
@@ -262,7 +284,7 @@ namespace
         TestData test;
         test.index  = data.size() + 1;
         test.type   = type;
-        test.states = states_of(type);
+        test.states = states_of(type, c.reach);
         for (const TestState &state : test.states)
           test.measured.push_back(
             homogeneous_response(*material, nullptr, state, c.incompressible)

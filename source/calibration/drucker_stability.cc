@@ -75,9 +75,12 @@ namespace hyperelastic
                       const unsigned int samples)
     {
       std::vector<StabilityVerdict> verdicts;
+      const bool                    uniaxial = isotropic_about_x(material);
       for (const TestType mode :
            {TestType::uniaxial, TestType::equibiaxial, TestType::planar})
         {
+          if (mode == TestType::uniaxial && !uniaxial)
+            continue;
           StabilityVerdict verdict;
           verdict.mode = mode;
           for (const double end : {highest, lowest})

@@ -245,6 +245,18 @@ namespace hyperelastic
       return stretch_response(material, derivatives, state, incompressible);
     }
 
+    bool
+    isotropic_about_x(const Material<3> &material)
+    {
+      TestState state;
+      state.stretch_1      = 1.5;
+      const Tensor<2, 3> P = material.first_piola_kirchhoff(
+        diagonal(stretches_with(state, isochoric_lateral(state))));
+      return std::abs(P[1][1] - P[2][2]) <=
+             1e-10 *
+               (std::abs(P[1][1]) + std::abs(P[2][2]) + std::abs(P[0][0]));
+    }
+
     std::vector<double>
     principal_stretches(const Material<3> &material,
                         const TestState   &state,

@@ -60,6 +60,12 @@ namespace hyperelastic
           prm.leave_subsection();
         }
       const auto model = parsed(*handler({})).factory.create<3>();
+      if (model->depends_on_position())
+        reject("Material/Model",
+               model_name,
+               "has constants that vary with x, y, z here (fibre directions "
+               "given as expressions of them): a fit of homogeneous tests "
+               "needs them constant");
       const auto derivate =
         dynamic_cast<const ConstantDerivatives<3> *>(model.get());
       if (!derivate)
@@ -366,9 +372,15 @@ namespace hyperelastic
         }
       else
         {
+          // Every entry of the model's subsection (constants or not, such
+          // as fibre directions), as the registry lists them.
+          LameParameters unit;
+          unit.mu = unit.lambda = 1.;
           out << "  subsection " << model_name << "\n";
-          for (const std::string &entry : all_entries)
-            out << "    set " << entry << " = " << value(entry) << "\n";
+          for (const auto &entry :
+               material_model(model_name).entries_for_small_strain(unit))
+            out << "    set " << entry.first << " = " << value(entry.first)
+                << "\n";
           out << "  end\n";
         }
       if (!file_prony.weights.empty())

@@ -163,14 +163,22 @@ namespace hyperelastic
                    "a relaxation test fits the Prony series: give starting "
                    "Weights and Relaxation times");
           check_enough_data(data, *constants);
+          for (const TestData &test : data)
+            if ((test.type == TestType::uniaxial ||
+                 test.type == TestType::relaxation) &&
+                !isotropic_about_x(*constants->material(constants->start())))
+              reject("Fit/Data " + std::to_string(test.index) + "/Test",
+                     test_type_name(test.type),
+                     "the " + constants->model() +
+                       " model here is not isotropic about the test's axis "
+                       "(fibres off it), so a uniaxial test's lateral "
+                       "stretches differ, which the tests do not model: fit "
+                       "biaxial, equibiaxial, planar or simple shear data");
         }
       catch (const InputError &e)
         {
           throw InputError(file + ": " + e.what());
         }
-      if (!constants->material(constants->start()))
-        throw InputError(file + ": the Material subsection's constants are "
-                                "not admissible");
       return constants;
     }
 

@@ -41,9 +41,10 @@ namespace hyperelastic
       text() const;
     };
 
-    /// Uniaxial, equibiaxial and planar over stretches in [@p lowest,
-    /// @p highest] (lowest < 1 < highest), sampled at @p samples stretches
-    /// per side, geometrically spaced.
+    /// Uniaxial (where isotropic_about_x(), homogeneous_test.h),
+    /// equibiaxial and planar over stretches in [@p lowest, @p highest]
+    /// (lowest < 1 < highest), sampled at @p samples stretches per side,
+    /// geometrically spaced.
     std::vector<StabilityVerdict>
     drucker_stability(const Material<3> &material,
                       bool               incompressible,

@@ -84,6 +84,13 @@ namespace hyperelastic
                          const TestState              &state,
                          bool                          incompressible);
 
+    /// True if @p material responds alike in y and z to a stretch along x
+    /// (P_yy = P_zz at diag(1.5, 1.5^-1/2, 1.5^-1/2), to 1e-10 of their
+    /// size), so that a uniaxial test's lateral stretches are equal, as the
+    /// tests here assume. Not so for fibres off the x axis.
+    bool
+    isotropic_about_x(const Material<3> &material);
+
     /// The principal stretches (x, y, z) of @p state in equilibrium (for
     /// simple shear: 1, 1, 1); NaN if the lateral stretch cannot be solved.
     std::vector<double>

@@ -223,7 +223,8 @@ namespace hyperelastic
   };
 
   template <int dim>
-  class HolzapfelGasserOgden : public EvaluatedMaterial<dim>
+  class HolzapfelGasserOgden : public EvaluatedMaterial<dim>,
+                               public ConstantDerivatives<dim>
   {
   public:
     using Constants = HolzapfelGasserOgdenConstants;
@@ -339,6 +340,54 @@ namespace hyperelastic
           0.5 * constants.k1 / constants.k2 * std::expm1(constants.k2 * E * E);
       });
       return psi;
+    }
+
+    /// The numeric entries (the fibre directions are not constants one
+    /// differentiates by).
+    std::vector<std::string>
+    constant_names() const override
+    {
+      return {"Shear modulus", "k1", "k2", "Dispersion", "Bulk modulus"};
+    }
+
+    /// The matrix's dP/dmu and dP/dkappa (first_invariant_model.h), and per
+    /// stretched family, with e = exp(k2 E^2), G = dE/dF:
+    ///   dP/dk1 = E e G,   dP/dk2 = k1 E^3 e G,
+    ///   dP/dkd = k1 e (1 + 2 k2 E^2) dE/dkd G + k1 E e dG/dkd,
+    ///   dE/dkd = (I1 - 3) - 3 (I4 - 1),   dG/dkd = 2 F - 6 (F a) (x) a.
+    std::vector<Tensor<2, dim>>
+    stress_derivatives(const Tensor<2, dim> &F) const override
+    {
+      require_directions();
+      const std::vector<Tensor<2, dim>> of_matrix =
+        matrix.stress_derivatives(F);
+      std::vector<Tensor<2, dim>> dP(5);
+      dP[0] = of_matrix[0];
+      dP[4] = of_matrix[1];
+      if (!std::isfinite(dP[0][0][0]))
+        return std::vector<Tensor<2, dim>>(
+          5, Material<dim>::not_a_number_tensor());
+      const double kd = constants.kd, k1 = constants.k1, k2 = constants.k2;
+      const double I1 = first_invariant(F);
+      for_each_stretched_family(
+        F,
+        [&](const dealii::Tensor<1, dim> &a,
+            const dealii::Tensor<1, dim> &Fa,
+            const double                  E) {
+          const double   e  = std::exp(k2 * E * E);
+          const double   dE = (I1 - 3.) - 3. * (Fa * Fa - 1.);
+          Tensor<2, dim> G = 2. * kd * F, dG = 2. * F;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int J = 0; J < dim; ++J)
+              {
+                G[i][J] += 2. * (1. - 3. * kd) * Fa[i] * a[J];
+                dG[i][J] -= 6. * Fa[i] * a[J];
+              }
+          dP[1] += E * e * G;
+          dP[2] += k1 * E * E * E * e * G;
+          dP[3] += k1 * e * (1. + 2. * k2 * E * E) * dE * G + k1 * E * e * dG;
+        });
+      return dP;
     }
 
   private:
