@@ -1,7 +1,7 @@
 // Calibration (issue 58): the Material block a fit writes, included in
-// homogeneous 3D scenes of the uniaxial, equibiaxial, planar and biaxial
-// tests, reproduces the fitted curve (the same stress function): each
-// scene's end-face reaction per reference area against the fit's value at
+// homogeneous 3D scenes of the uniaxial, equibiaxial, planar, biaxial and
+// volumetric tests, reproduces the fitted curve (the same stress function):
+// each scene's end-face reaction per reference area against the fit's value at
 // the stretch of every load step, relative to the curve's scale, 1e-8.
 // The fit is compressible (the scenes' lateral faces are free), of a
 // one-term Ogden model with its bulk modulus, from data the model made.
@@ -78,6 +78,11 @@ namespace
       dirichlet(3, "y", "0");
     else if (type == TestType::biaxial)
       dirichlet(3, "y", y_end.str());
+    else if (type == TestType::volumetric)
+      {
+        dirichlet(3, "y", x_end.str());
+        dirichlet(5, "z", x_end.str());
+      }
     return out.str();
   }
 
@@ -110,7 +115,8 @@ main(int argc, char *argv[])
   for (const TestType type : {TestType::uniaxial,
                               TestType::equibiaxial,
                               TestType::planar,
-                              TestType::biaxial})
+                              TestType::biaxial,
+                              TestType::volumetric})
     {
       TestData test;
       test.index = data.size() + 1;
@@ -119,8 +125,9 @@ main(int argc, char *argv[])
         for (unsigned int c = 0; c < (type == TestType::biaxial ? 2 : 1); ++c)
           {
             TestState state;
-            state.type      = type;
-            state.stretch_1 = 0.8 + 0.1 * i;
+            state.type = type;
+            state.stretch_1 =
+              type == TestType::volumetric ? 0.86 + 0.03 * i : 0.8 + 0.1 * i;
             state.stretch_2 = 1.2;
             state.component = c;
             test.states.push_back(state);
@@ -146,9 +153,12 @@ main(int argc, char *argv[])
   for (const TestType type : {TestType::uniaxial,
                               TestType::equibiaxial,
                               TestType::planar,
-                              TestType::biaxial})
+                              TestType::biaxial,
+                              TestType::volumetric})
     {
-      const double l1 = 1.6, l2 = 1.2;
+      // Volumetric: every face moved to J = 0.9 (pressure = -P_xx / s^2).
+      const bool   volumetric = type == TestType::volumetric;
+      const double l1 = volumetric ? std::cbrt(0.9) : 1.6, l2 = 1.2;
       const auto   problem =
         testing::run_scene<3>(scene(type, l1, l2, block.str()));
       double worst = 0., scale = 0.;
@@ -157,7 +167,8 @@ main(int argc, char *argv[])
           {
             TestState state;
             state.type      = type;
-            state.stretch_1 = 1. + (l1 - 1.) * row.load_factor;
+            const double s  = 1. + (l1 - 1.) * row.load_factor;
+            state.stretch_1 = volumetric ? s * s * s : s;
             state.stretch_2 = 1. + (l2 - 1.) * row.load_factor;
             state.component = c;
             TestData one;
@@ -165,7 +176,8 @@ main(int argc, char *argv[])
             one.states         = {state};
             const double curve = model_values(*fitted, {}, {one}, false)[0][0];
             const double reaction =
-              column(row, c == 0 ? "reaction_1_x" : "reaction_3_y");
+              column(row, c == 0 ? "reaction_1_x" : "reaction_3_y") *
+              (volumetric ? -1. / (s * s) : 1.);
             worst = std::max(worst, std::abs(reaction - curve));
             scale = std::max(scale, std::abs(curve));
           }
