@@ -159,7 +159,8 @@ namespace hyperelastic
                  : std::vector<std::vector<double>>();
       }
 
-      unsigned int runs = 0;
+      /// Scene runs, and Jacobians the adjoint gave (for the summary).
+      unsigned int runs = 0, adjoint_jacobians = 0;
 
     private:
       /// A column reaction_<id>_<axis> (axis = dim: another column).
@@ -220,9 +221,6 @@ namespace hyperelastic
       differences
     };
 
-    /// Jacobians taken by the adjoint (counted for the summary).
-    unsigned int adjoint_gradients = 0;
-
     /// The residuals at @p x and their Jacobian: by the adjoint of the
     /// converged equilibria (Problem::reaction_sensitivities() through the
     /// chain to the free entries) where it applies, otherwise by central
@@ -263,7 +261,7 @@ namespace hyperelastic
       if (!adjoint.empty() && adjoint[0].size() == chain.size() &&
           chain[0].size() == x.size())
         {
-          ++adjoint_gradients;
+          ++runs.adjoint_jacobians;
           for (unsigned int i = 0; i < measured.size(); ++i)
             for (unsigned int m = 0; m < chain.size(); ++m)
               for (unsigned int k = 0; k < x.size(); ++k)
@@ -338,9 +336,8 @@ namespace hyperelastic
       dealii::ParameterHandler prm;
       const auto               fitted    = scene_constants(parameters, prm);
       const ModelConstants    &constants = *fitted;
-      adjoint_gradients                  = 0;
-      SceneRuns<dim>      runs(scene, data, parameters.scene_column, comm);
-      LeastSquaresProblem problem;
+      SceneRuns<dim>           runs(scene, data, parameters.scene_column, comm);
+      LeastSquaresProblem      problem;
       problem.evaluate = [&](const std::vector<double>        &x,
                              std::vector<double>              &r,
                              std::vector<std::vector<double>> &J) {
@@ -374,7 +371,7 @@ namespace hyperelastic
       note << "through the scene " << parameters.scene << " (column "
            << parameters.scene_column << " at " << data.states.size()
            << " load factors): Jacobian "
-           << (adjoint_gradients > 0
+           << (runs.adjoint_jacobians > 0
                  ? "by the adjoint of the converged equilibria (one solve per "
                    "data point)"
                  : "by central differences of whole scene runs (the adjoint "
