@@ -1,10 +1,10 @@
 // Calibration (issue 58): the Material block a fit writes, included in
-// homogeneous 3D scenes of the uniaxial, equibiaxial, planar, biaxial and
-// volumetric tests, reproduces the fitted curve (the same stress function):
-// each scene's end-face reaction per reference area against the fit's value at
-// the stretch of every load step, relative to the curve's scale, 1e-8.
-// The fit is compressible (the scenes' lateral faces are free), of a
-// one-term Ogden model with its bulk modulus, from data the model made.
+// homogeneous 3D scenes of the uniaxial, equibiaxial, planar, biaxial,
+// volumetric and simple shear tests, reproduces the fitted curve (the same
+// stress function): each scene's end-face reaction per reference area against
+// the fit's value at the stretch of every load step, relative to the curve's
+// scale, 1e-8. The fit is compressible (the scenes' lateral faces are free), of
+// a one-term Ogden model with its bulk modulus, from data the model made.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
@@ -63,6 +63,16 @@ namespace
           << "\n  set Components = " << component
           << "\n  set Displacement = " << displacement << "\nend\n";
     };
+    if (type == TestType::simple_shear)
+      {
+        // Every face moved with u = (g y t, 0, 0).
+        std::ostringstream shear;
+        shear.precision(17);
+        shear << l1 << " * y * t; 0; 0";
+        for (int id = 0; id < 6; ++id)
+          dirichlet(id, "x, y, z", shear.str());
+        return out.str();
+      }
     dirichlet(0, "x", "0");
     dirichlet(2, "y", "0");
     dirichlet(4, "z", "0");
@@ -116,7 +126,8 @@ main(int argc, char *argv[])
                               TestType::equibiaxial,
                               TestType::planar,
                               TestType::biaxial,
-                              TestType::volumetric})
+                              TestType::volumetric,
+                              TestType::simple_shear})
     {
       TestData test;
       test.index = data.size() + 1;
@@ -125,9 +136,10 @@ main(int argc, char *argv[])
         for (unsigned int c = 0; c < (type == TestType::biaxial ? 2 : 1); ++c)
           {
             TestState state;
-            state.type = type;
-            state.stretch_1 =
-              type == TestType::volumetric ? 0.86 + 0.03 * i : 0.8 + 0.1 * i;
+            state.type      = type;
+            state.stretch_1 = type == TestType::volumetric     ? 0.86 + 0.03 * i
+                              : type == TestType::simple_shear ? 0.1 * i
+                                                               : 0.8 + 0.1 * i;
             state.stretch_2 = 1.2;
             state.component = c;
             test.states.push_back(state);
@@ -154,11 +166,17 @@ main(int argc, char *argv[])
                               TestType::equibiaxial,
                               TestType::planar,
                               TestType::biaxial,
-                              TestType::volumetric})
+                              TestType::volumetric,
+                              TestType::simple_shear})
     {
       // Volumetric: every face moved to J = 0.9 (pressure = -P_xx / s^2).
+      // Simple shear: every face moved to g = 0.8; the top face's x
+      // reaction is P_xy (the P_xx of the faces x = 0 and 1 at its edges
+      // cancel on the symmetric mesh).
       const bool   volumetric = type == TestType::volumetric;
-      const double l1 = volumetric ? std::cbrt(0.9) : 1.6, l2 = 1.2;
+      const bool   shear      = type == TestType::simple_shear;
+      const double l1         = volumetric ? std::cbrt(0.9) : shear ? 0.8 : 1.6;
+      const double l2         = 1.2;
       const auto   problem =
         testing::run_scene<3>(scene(type, l1, l2, block.str()));
       double worst = 0., scale = 0.;
@@ -168,16 +186,20 @@ main(int argc, char *argv[])
             TestState state;
             state.type      = type;
             const double s  = 1. + (l1 - 1.) * row.load_factor;
-            state.stretch_1 = volumetric ? s * s * s : s;
+            state.stretch_1 = volumetric ? s * s * s
+                              : shear    ? l1 * row.load_factor
+                                         : s;
             state.stretch_2 = 1. + (l2 - 1.) * row.load_factor;
             state.component = c;
             TestData one;
             one.type           = type;
             one.states         = {state};
             const double curve = model_values(*fitted, {}, {one}, false)[0][0];
-            const double reaction =
-              column(row, c == 0 ? "reaction_1_x" : "reaction_3_y") *
-              (volumetric ? -1. / (s * s) : 1.);
+            const double reaction = column(row,
+                                           shear    ? "reaction_3_x"
+                                           : c == 0 ? "reaction_1_x"
+                                                    : "reaction_3_y") *
+                                    (volumetric ? -1. / (s * s) : 1.);
             worst = std::max(worst, std::abs(reaction - curve));
             scale = std::max(scale, std::abs(curve));
           }
