@@ -124,7 +124,8 @@ namespace hyperelastic
       "Load control: load factors (in dynamics: times) a step lands on "
       "exactly, as the last step lands on 1: the step that would pass one "
       "ends at it, before and after cut-backs. Strictly increasing and "
-      "positive; those at or beyond the end are ignored. For a CSV row at "
+      "positive; those at or beyond the end are ignored, and one within a "
+      "millionth of the nominal step of a step's start. For a CSV row at "
       "given load factors (a measured curve's, as 'hyperelastic --fit' "
       "with a scene uses). Empty: none.");
     prm.leave_subsection();
