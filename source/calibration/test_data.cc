@@ -25,6 +25,46 @@ namespace hyperelastic
         return fields;
       }
 
+      /// A CSV file's header and data rows (blank lines and lines starting
+      /// with '#' skipped), each with the "<kind> file '...' line N" its
+      /// messages start with.
+      struct CsvRow
+      {
+        std::string              where;
+        std::vector<std::string> fields;
+      };
+
+      struct CsvFile
+      {
+        CsvRow              header; ///< no fields: the file has no header
+        std::vector<CsvRow> rows;
+      };
+
+      CsvFile
+      read_csv(const std::string &file, const std::string &kind)
+      {
+        std::ifstream in(file);
+        if (!in)
+          throw InputError("cannot open " + kind + " file '" + file + "'");
+        CsvFile     csv;
+        std::string line;
+        for (unsigned int number_of_line = 1; std::getline(in, line);
+             ++number_of_line)
+          {
+            const std::string text = dealii::Utilities::trim(line);
+            if (text.empty() || text[0] == '#')
+              continue;
+            CsvRow row{kind + " file '" + file + "' line " +
+                         std::to_string(number_of_line),
+                       split_row(text)};
+            if (csv.header.fields.empty())
+              csv.header = row;
+            else
+              csv.rows.push_back(row);
+          }
+        return csv;
+      }
+
       double
       number(const std::string &text, const std::string &where)
       {
@@ -41,6 +81,16 @@ namespace hyperelastic
         if (used == 0 || used != text.size() || !std::isfinite(value))
           throw InputError(where + ": '" + text + "' is not a finite number");
         return value;
+      }
+
+      /// An input error if @p row has fewer fields than @p needed.
+      void
+      check_length(const CsvRow &row, const std::size_t needed)
+      {
+        if (row.fields.size() < needed)
+          throw InputError(row.where + ": " +
+                           std::to_string(row.fields.size()) +
+                           " values, the header has more columns");
       }
 
       /// The states and measured values of one data row.
@@ -81,6 +131,14 @@ namespace hyperelastic
         data.states.push_back(state);
         data.measured.push_back(v[1]);
       }
+
+      /// Field @p c of @p row as a number (check_length() first).
+      double
+      field(const CsvRow &row, const unsigned int c)
+      {
+        check_length(row, c + 1);
+        return number(row.fields[c], row.where);
+      }
     } // namespace
 
     std::vector<std::string>
@@ -109,103 +167,69 @@ namespace hyperelastic
                    const TestType     type,
                    const double       held_stretch)
     {
-      std::ifstream in(file);
-      if (!in)
-        throw InputError("cannot open test data file '" + file + "'");
-      TestData data;
+      const CsvFile csv = read_csv(file, "test data");
+      TestData      data;
       data.type                             = type;
       data.file                             = file;
       const std::vector<std::string> wanted = required_columns(type);
+      const auto                    &header = csv.header.fields;
       std::vector<unsigned int>      column;
-      std::string                    line;
-      for (unsigned int number_of_line = 1; std::getline(in, line);
-           ++number_of_line)
+      for (const std::string &name : wanted)
         {
-          const std::string text = dealii::Utilities::trim(line);
-          if (text.empty() || text[0] == '#')
-            continue;
-          const std::string where = "test data file '" + file + "' line " +
-                                    std::to_string(number_of_line);
-          const std::vector<std::string> fields = split_row(text);
-          if (column.empty())
-            {
-              for (const std::string &name : wanted)
-                {
-                  const auto found =
-                    std::find(fields.begin(), fields.end(), name);
-                  if (found == fields.end())
-                    throw InputError(where + ": the header has no column '" +
-                                     name + "' (a " + test_type_name(type) +
-                                     " test needs the columns " +
-                                     listed(wanted) + ")");
-                  column.push_back(found - fields.begin());
-                }
-              continue;
-            }
+          if (header.empty())
+            break;
+          const auto found = std::find(header.begin(), header.end(), name);
+          if (found == header.end())
+            throw InputError(csv.header.where + ": the header has no column '" +
+                             name + "' (a " + test_type_name(type) +
+                             " test needs the columns " + listed(wanted) + ")");
+          column.push_back(found - header.begin());
+        }
+      for (const CsvRow &row : csv.rows)
+        {
           std::vector<double> values;
           for (const unsigned int c : column)
-            {
-              if (c >= fields.size())
-                throw InputError(where + ": " + std::to_string(fields.size()) +
-                                 " values, the header has more columns");
-              values.push_back(number(fields[c], where));
-            }
-          add_row(data, values, held_stretch, where);
+            values.push_back(field(row, c));
+          add_row(data, values, held_stretch, row.where);
         }
       if (data.states.empty())
         throw InputError("test data file '" + file + "' has no data rows" +
                          (column.empty() ? " (and no header)" : ""));
       return data;
     }
+
     TestData
     read_scene_data(const std::string &file, std::string &column)
     {
-      std::ifstream in(file);
-      if (!in)
-        throw InputError("cannot open scene data file '" + file + "'");
-      TestData data;
+      const CsvFile csv = read_csv(file, "scene data");
+      TestData      data;
       data.type = TestType::scene;
       data.file = file;
       column.clear();
-      std::string  line;
-      unsigned int t_column = 0, y_column = 0;
-      for (unsigned int number_of_line = 1; std::getline(in, line);
-           ++number_of_line)
+      const auto &header = csv.header.fields;
+      const auto  t = std::find(header.begin(), header.end(), "load_factor");
+      if (!header.empty() && (t == header.end() || header.size() < 2))
+        throw InputError(csv.header.where +
+                         ": the header needs the columns load_factor and one "
+                         "column of the scene's CSV (for example "
+                         "reaction_2_z)");
+      const unsigned int t_column = t - header.begin();
+      const unsigned int y_column = t_column == 0 ? 1 : 0;
+      if (!header.empty())
+        column = header[y_column];
+      for (const CsvRow &row : csv.rows)
         {
-          const std::string text = dealii::Utilities::trim(line);
-          if (text.empty() || text[0] == '#')
-            continue;
-          const std::string where = "scene data file '" + file + "' line " +
-                                    std::to_string(number_of_line);
-          const std::vector<std::string> fields = split_row(text);
-          if (column.empty())
-            {
-              const auto t = std::find(fields.begin(),
-                                       fields.end(),
-                                       std::string("load_factor"));
-              if (t == fields.end() || fields.size() < 2)
-                throw InputError(where +
-                                 ": the header needs the columns "
-                                 "load_factor and one column of the scene's "
-                                 "CSV (for example reaction_2_z)");
-              t_column = t - fields.begin();
-              y_column = t_column == 0 ? 1 : 0;
-              column   = fields[y_column];
-              continue;
-            }
-          if (std::max(t_column, y_column) >= fields.size())
-            throw InputError(where + ": " + std::to_string(fields.size()) +
-                             " values, the header has more columns");
+          check_length(row, std::max(t_column, y_column) + 1);
           TestState state;
           state.type      = TestType::scene;
-          state.stretch_1 = number(fields[t_column], where);
+          state.stretch_1 = number(row.fields[t_column], row.where);
           if (!(state.stretch_1 > 0.) ||
               (!data.states.empty() &&
                !(state.stretch_1 > data.states.back().stretch_1)))
-            throw InputError(where + ": load factors must be positive and "
-                                     "strictly increasing");
+            throw InputError(row.where + ": load factors must be positive and "
+                                         "strictly increasing");
           data.states.push_back(state);
-          data.measured.push_back(number(fields[y_column], where));
+          data.measured.push_back(number(row.fields[y_column], row.where));
         }
       if (data.states.empty())
         throw InputError("scene data file '" + file + "' has no data rows");
