@@ -213,14 +213,10 @@ namespace hyperelastic
     ModelConstants::get(dealii::ParameterHandler &prm,
                         const std::string        &entry) const
     {
-      prm.enter_subsection("Material");
-      if (pair.empty())
-        prm.enter_subsection(model_name);
-      const std::string value = prm.get(entry);
-      if (pair.empty())
-        prm.leave_subsection();
-      prm.leave_subsection();
-      return value;
+      return prm.get(pair.empty()
+                       ? std::vector<std::string>{"Material", model_name}
+                       : std::vector<std::string>{"Material"},
+                     entry);
     }
 
     std::vector<double>
@@ -247,12 +243,6 @@ namespace hyperelastic
       prm->parse_input_from_string(file_text, "", true);
       set_free(*prm, values);
       prm->enter_subsection("Material");
-      if (pair.empty())
-        prm->enter_subsection(model_name);
-      if (!volumetric_stand_in.empty())
-        prm->set(volumetric_entry, volumetric_stand_in);
-      if (pair.empty())
-        prm->leave_subsection();
       prm->enter_subsection("Viscoelasticity");
       prm->set("Weights", "");
       prm->set("Relaxation times", "");
@@ -270,6 +260,8 @@ namespace hyperelastic
         prm.enter_subsection(model_name);
       for (unsigned int k = 0; k < values.size() && k < free.size(); ++k)
         prm.set(free[k], exact_entry_text(values[k]));
+      if (!volumetric_stand_in.empty())
+        prm.set(volumetric_entry, volumetric_stand_in);
       if (pair.empty())
         prm.leave_subsection();
       prm.leave_subsection();

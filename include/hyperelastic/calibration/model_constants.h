@@ -133,7 +133,8 @@ namespace hyperelastic
       /// handler() once and reused, since each trial sets every free entry;
       /// dropped when a rejected trial leaves it inside a subsection.
       mutable std::unique_ptr<dealii::ParameterHandler> trial_handler;
-      /// Writes the model's free entries at @p values into @p prm.
+      /// Writes the model's free entries at @p values into @p prm, and the
+      /// volumetric stand-in.
       void
       set_free(dealii::ParameterHandler  &prm,
                const std::vector<double> &values) const;
