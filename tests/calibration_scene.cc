@@ -23,10 +23,9 @@ using namespace hyperelastic::calibration;
 
 namespace
 {
-  const char *
+  std::string
   material_text(const double scale)
   {
-    static std::string text;
     std::ostringstream out;
     out.precision(17);
     out << "subsection Material\n  set Model = Ogden\n  subsection Ogden\n"
@@ -34,8 +33,7 @@ namespace
         << "\n    set alpha1 = " << 2.6 * scale
         << "\n    set mu2 = 0\n    set mu3 = 0\n"
         << "    set Bulk modulus = " << 12. * scale << "\n  end\nend\n";
-    text = out.str();
-    return text.c_str();
+    return out.str();
   }
 
   /// The scene: the unit cube on rollers at x = 0, y = 0, z = 0, stretched

@@ -163,10 +163,13 @@ namespace hyperelastic
                    "a relaxation test fits the Prony series: give starting "
                    "Weights and Relaxation times");
           check_enough_data(data, *constants);
+          // (The constructor parsed the starting constants: admissible.)
+          const bool isotropic =
+            isotropic_about_x(*constants->material(constants->start()));
           for (const TestData &test : data)
             if ((test.type == TestType::uniaxial ||
                  test.type == TestType::relaxation) &&
-                !isotropic_about_x(*constants->material(constants->start())))
+                !isotropic)
               reject("Fit/Data " + std::to_string(test.index) + "/Test",
                      test_type_name(test.type),
                      "the " + constants->model() +
