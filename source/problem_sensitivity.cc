@@ -8,10 +8,11 @@
 //   K_ff^T a = (K^T e_R)_f,
 // one solve for every constant at once (a is zero on the constrained
 // dofs). K^T e_R takes the supported rows of the tangent assembled without
-// constraints; K_ff is the system's tangent at the converged state. The
-// adjoint solve uses K_ff itself, so the tangent must be symmetric (a
-// conservative operator); dr/dc assembles dP/dc of the model
-// (ConstantDerivatives) like the internal forces.
+// constraints; K_ff is the system's tangent at the converged state. A
+// conservative operator has a symmetric tangent and the adjoint solve uses
+// K_ff itself; otherwise (follower loads) it solves with K_ff^T
+// (EquilibriumSystem::solve_transposed_tangent). dr/dc assembles dP/dc of
+// the model (ConstantDerivatives) like the internal forces.
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe.h>
 
@@ -61,7 +62,8 @@ namespace hyperelastic
   {
     const ElasticityOperator<dim> &op = *model.elasticity;
     const VectorType              &u  = system->solution();
-    if (!op.is_conservative())
+    const bool symmetric = op.is_conservative();
+    if (!symmetric && system->has_system_constraints())
       return {};
     const std::vector<VectorType> dr =
       op.constant_forces(u, system->residual_forces());
@@ -83,9 +85,12 @@ namespace hyperelastic
                        scratch,
                        TangentProjection::none);
     full.Tvmult(b, e_R);
-    // K_ff a = b_f at the converged state (K_ff symmetric).
+    // K_ff^T a = b_f at the converged state.
     system->assemble_tangent();
-    system->solve_tangent(b, a);
+    if (symmetric)
+      system->solve_tangent(b, a);
+    else
+      system->solve_transposed_tangent(b, a);
     std::vector<double> derivatives;
     for (const VectorType &dr_dc : dr)
       derivatives.push_back(e_R * dr_dc - a * dr_dc);

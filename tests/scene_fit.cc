@@ -28,7 +28,8 @@ namespace
   scene(const double       mu,
         const double       kappa,
         const std::string &stops,
-        const unsigned int degree = 1)
+        const unsigned int degree = 1,
+        const std::string &extra  = "")
   {
     std::ostringstream out;
     out << std::setprecision(17) << "subsection Problem\n  set Dimension = 2\n"
@@ -48,7 +49,8 @@ namespace
         << "  set Boundary region = y > 1 - 1e-6 && x < 0.75\n"
         << "  set Components = x, y\n  set Displacement = 0; -0.25 * t\nend\n"
         << "subsection Output\n  set Write VTU = false\n"
-        << "  set Base name = scene_fit_data\nend\n";
+        << "  set Base name = scene_fit_data\nend\n"
+        << extra;
     return out.str();
   }
 } // namespace
@@ -100,18 +102,27 @@ main(int argc, char *argv[])
   fit.data.push_back(calibration::read_scene_data(data, fit.scene_column));
   fit.data.back().index = 1;
   // The adjoint's Jacobian at the start against central differences of
-  // whole runs (relative to the largest entry of each column, 1e-5), P1
-  // and P2.
-  for (const unsigned int degree : {1u, 2u})
+  // whole runs (relative to the largest entry of each column, 1e-5): P1,
+  // P2, and P1 with a follower pressure on the top right of the punch (an
+  // open surface with both ends free: the tangent is not symmetric, the
+  // adjoint solves with its transpose).
+  const std::string follower =
+    "subsection Pressure 1\n  set Boundary region = y > 1 - 1e-6 && x > 1\n"
+    "  set Pressure = 0.5 * t\nend\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+    {"P1", scene(1.5 * mu, 0.5 * kappa, "", 1)},
+    {"P2", scene(1.5 * mu, 0.5 * kappa, "", 2)},
+    {"P1, follower pressure",
+     scene(1.5 * mu, 0.5 * kappa, "", 1, follower)}};
+  for (const auto &[element, text] : cases)
     {
       if (rank == 0)
         {
           std::ofstream start(start_scene);
-          start << scene(1.5 * mu, 0.5 * kappa, "", degree);
+          start << text;
         }
       MPI_Barrier(comm);
-      const auto        J       = scene_jacobians(fit, comm);
-      const std::string element = degree == 1 ? "P1" : "P2";
+      const auto J = scene_jacobians(fit, comm);
       check.is_true(element + ": the adjoint applies (a reaction, no contact)",
                     J[0].size() == stops.size());
       for (unsigned int k = 0; k < 2 && J[0].size() == stops.size(); ++k)

@@ -202,6 +202,22 @@ namespace hyperelastic
     double
     damping_scale() override;
 
+    /// The adjoint of the last assemble_tangent(): solves K^T x = b on the
+    /// free unknowns (0 on the constrained ones) with the scene's linear
+    /// solver, K^T formed explicitly (a non-symmetric tangent: follower
+    /// loads). Returns the Krylov iterations. Not with system constraints
+    /// (has_system_constraints()): their projections belong to K. Collective.
+    unsigned int
+    solve_transposed_tangent(const VectorType &b, VectorType &x);
+
+    /// Whether constraints beyond the Dirichlet ones act on the solves
+    /// (pinned rigid motions of unheld bodies, prescribed resultants).
+    bool
+    has_system_constraints() const
+    {
+      return !system_constraints.empty();
+    }
+
     /// What a restart needs (a checkpoint): the last converged state and
     /// the one before it (the secant predictor's), the driver's state and
     /// the materials' history.

@@ -180,8 +180,8 @@ namespace hyperelastic
     /// ConstantDerivatives) by the adjoint of the converged equilibrium
     /// r(u, c) = 0 (source/problem_sensitivity.cc). Empty where it does not
     /// apply: a material part other than the generic one (mixed,
-    /// stiffness warping), contact, a non-symmetric tangent, a model
-    /// without ConstantDerivatives. Collective.
+    /// stiffness warping), contact, a non-symmetric tangent together with
+    /// system constraints, a model without ConstantDerivatives. Collective.
     std::vector<double>
     reaction_sensitivities(dealii::types::boundary_id id, unsigned int axis);
 

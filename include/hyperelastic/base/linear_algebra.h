@@ -2,7 +2,8 @@
 // small operations on them that several concerns need: a dot product over
 // the owned entries and the row-wise Dirichlet condensation of a matrix
 // contribution (constrained rows left alone, constrained columns moved to
-// the right-hand side with their prescribed values).
+// the right-hand side with their prescribed values), and the transpose of a
+// distributed matrix (an adjoint solve).
 #pragma once
 
 #include <deal.II/lac/affine_constraints.h>
@@ -76,6 +77,11 @@ namespace hyperelastic
                   std::vector<double>{-moved});
       }
   }
+
+  /// @p transposed = A^T with A's row partition (A square, its rows and
+  /// columns partitioned alike). Collective.
+  void
+  transpose(const MatrixType &A, MatrixType &transposed);
 
   /// u . v over the owned entries (u with ghost entries, v without; not
   /// summed over ranks).
