@@ -11,8 +11,10 @@
 // constraints; K_ff is the system's tangent at the converged state. A
 // conservative operator has a symmetric tangent and the adjoint solve uses
 // K_ff itself; otherwise (follower loads) it solves with K_ff^T
-// (EquilibriumSystem::solve_transposed_tangent). dr/dc assembles dP/dc of
-// the model (ConstantDerivatives) like the internal forces.
+// (EquilibriumSystem::solve_transposed_tangent). dr/dc comes from the
+// material part (ConstantForces): dP/dc of the model (ConstantDerivatives)
+// assembled like the internal forces, and in the mixed formulation also the
+// pressure rows and the condensed bubble.
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe.h>
 

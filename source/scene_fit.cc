@@ -375,8 +375,8 @@ namespace hyperelastic
                  ? "by the adjoint of the converged equilibria (one solve per "
                    "data point)"
                  : "by central differences of whole scene runs (the adjoint "
-                   "needs a reaction column, the displacement formulation, no "
-                   "contact and a symmetric tangent)")
+                   "needs a reaction column, no contact, no history and a "
+                   "model with constant derivatives)")
            << ", " << runs.runs << " scene runs in all";
       report.notes = {note.str()};
       report.seconds =

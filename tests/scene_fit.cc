@@ -105,24 +105,56 @@ main(int argc, char *argv[])
   // whole runs (relative to the largest entry of each column, 1e-5): P1,
   // P2, and P1 with a follower pressure on the top right of the punch (an
   // open surface with both ends free: the tangent is not symmetric, the
-  // adjoint solves with its transpose).
+  // adjoint solves with its transpose); the mixed formulation with each
+  // element: the decoupled neo-Hookean model (its Lame pair chained to mu
+  // and kappa), and Mooney-Rivlin's C1 and Bulk modulus with Taylor-Hood.
   const std::string follower =
     "subsection Pressure 1\n  set Boundary region = y > 1 - 1e-6 && x > 1\n"
     "  set Pressure = 0.5 * t\nend\n";
-  const std::vector<std::pair<std::string, std::string>> cases = {
-    {"P1", scene(1.5 * mu, 0.5 * kappa, "", 1)},
-    {"P2", scene(1.5 * mu, 0.5 * kappa, "", 2)},
-    {"P1, follower pressure",
-     scene(1.5 * mu, 0.5 * kappa, "", 1, follower)}};
-  for (const auto &[element, text] : cases)
+  const auto mixed = [](const std::string &element) {
+    return "subsection Problem\n  set Formulation = mixed\n"
+           "  set Mixed element = " +
+           element +
+           "\nend\nsubsection Material\n"
+           "  set Model = decoupled neo-Hookean\nend\n";
+  };
+  const std::string mooney_rivlin =
+    "subsection Material\n  set Model = Mooney-Rivlin\n"
+    "  subsection Mooney-Rivlin\n    set C1 = 0.6\n    set C2 = 0.15\n"
+    "    set Bulk modulus = 3\n  end\nend\n";
+  struct Case
+  {
+    std::string              name, text;
+    std::vector<std::string> free;
+  };
+  const std::vector<std::string> lame_free = {"Shear modulus", "Bulk modulus"};
+  const std::vector<Case>        cases     = {
+               {"P1", scene(1.5 * mu, 0.5 * kappa, "", 1), lame_free},
+               {"P2", scene(1.5 * mu, 0.5 * kappa, "", 2), lame_free},
+               {"P1, follower pressure",
+                scene(1.5 * mu, 0.5 * kappa, "", 1, follower),
+                lame_free},
+               {"mixed MINI",
+                scene(1.5 * mu, 0.5 * kappa, "", 1, mixed("P1-bubble/P1")),
+                lame_free},
+               {"mixed P1/P1 stabilized",
+                scene(1.5 * mu, 0.5 * kappa, "", 1, mixed("P1/P1 stabilized")),
+                lame_free},
+               {"mixed P2/P1, Mooney-Rivlin, follower pressure",
+                scene(
+       1.5 * mu, 0.5 * kappa, "", 1, mixed("P2/P1") + mooney_rivlin + follower),
+                {"C1", "Bulk modulus"}}};
+  for (const Case &c : cases)
     {
       if (rank == 0)
         {
           std::ofstream start(start_scene);
-          start << text;
+          start << c.text;
         }
       MPI_Barrier(comm);
-      const auto J = scene_jacobians(fit, comm);
+      fit.free_constants         = c.free;
+      const auto         J       = scene_jacobians(fit, comm);
+      const std::string &element = c.name;
       check.is_true(element + ": the adjoint applies (a reaction, no contact)",
                     J[0].size() == stops.size());
       for (unsigned int k = 0; k < 2 && J[0].size() == stops.size(); ++k)
@@ -133,13 +165,13 @@ main(int argc, char *argv[])
               worst = std::max(worst, std::abs(J[0][i][k] - J[1][i][k]));
               scale = std::max(scale, std::abs(J[1][i][k]));
             }
-          check.at_most(element + ": adjoint d(force)/d" +
-                          (k == 0 ? "mu" : "kappa") +
+          check.at_most(element + ": adjoint d(force)/d" + c.free[k] +
                           " against central differences of runs",
                         worst / scale,
                         1e-5);
         }
     }
+  fit.free_constants = lame_free;
   if (rank == 0)
     {
       std::ofstream start(start_scene);

@@ -178,10 +178,11 @@ namespace hyperelastic
     /// observer): the derivatives of the CSV column reaction_<id>_<axis>
     /// with respect to the model's constants (in the order of its
     /// ConstantDerivatives) by the adjoint of the converged equilibrium
-    /// r(u, c) = 0 (source/problem_sensitivity.cc). Empty where it does not
-    /// apply: a material part other than the generic one (mixed,
-    /// stiffness warping), contact, a non-symmetric tangent together with
-    /// system constraints, a model without ConstantDerivatives. Collective.
+    /// r(u, c) = 0 (source/problem_sensitivity.cc), in the displacement
+    /// (P1, P2) or the mixed formulation (every element). Empty where it
+    /// does not apply: stiffness warping, contact, a non-symmetric tangent
+    /// together with system constraints, a model without
+    /// ConstantDerivatives. Collective.
     std::vector<double>
     reaction_sensitivities(dealii::types::boundary_id id, unsigned int axis);
 

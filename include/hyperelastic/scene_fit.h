@@ -10,9 +10,10 @@
 // where the adjoint does not apply (2 runs per free constant and
 // iteration); the summary says which. The adjoint (Problem::
 // reaction_sensitivities()) takes one solve per data point with the
-// converged tangent, for a reaction column of a scene in the displacement
-// formulation without contact and with a symmetric tangent. A step that
-// fails rejects the trial constants.
+// converged tangent (its transpose where follower loads make it
+// non-symmetric), for a reaction column of a scene without contact, in the
+// displacement or the mixed formulation. A step that fails rejects the
+// trial constants.
 // Quasi-static scenes with one material (no regions).
 #pragma once
 

@@ -45,7 +45,7 @@ namespace hyperelastic
                                            const VectorType &like) const
   {
     const auto *material_part =
-      dynamic_cast<const GenericAssembler<dim> *>(generic.get());
+      dynamic_cast<const ConstantForces<dim> *>(generic.get());
     if (!material_part || has_stiff_terms())
       return {};
     return material_part->constant_forces(u, like);

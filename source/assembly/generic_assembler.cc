@@ -155,24 +155,8 @@ namespace hyperelastic
             }
         }
     });
-    // Every rank agrees on the count (a rank without cells takes the
-    // others'), and on whether the model gives them at all.
-    const unsigned int count = Utilities::MPI::max(
-      available ? static_cast<unsigned int>(forces.size()) : 0u,
-      dof_handler.get_communicator());
-    if (Utilities::MPI::min(available ? 1u : 0u,
-                            dof_handler.get_communicator()) == 0 ||
-        count == 0)
-      return {};
-    if (forces.empty())
-      {
-        forces.assign(count, like);
-        for (VectorType &force : forces)
-          force = 0.;
-      }
-    for (VectorType &force : forces)
-      force.compress(VectorOperation::add);
-    return forces;
+    return gathered_constant_forces(
+      std::move(forces), available, like, dof_handler.get_communicator());
   }
 
   template <int dim>

@@ -5,7 +5,6 @@
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Map.h>
 #include <Epetra_RowMatrixTransposer.h>
-
 #include <memory>
 #include <stdexcept>
 
@@ -15,9 +14,10 @@ namespace hyperelastic
   transpose(const MatrixType &A, MatrixType &transposed)
   {
     const Epetra_CrsMatrix    &matrix = A.trilinos_matrix();
-    Epetra_RowMatrixTransposer transposer(const_cast<Epetra_CrsMatrix *>(&matrix));
-    Epetra_Map                 rows(matrix.RowMap());
-    Epetra_CrsMatrix          *result = nullptr;
+    Epetra_RowMatrixTransposer transposer(
+      const_cast<Epetra_CrsMatrix *>(&matrix));
+    Epetra_Map        rows(matrix.RowMap());
+    Epetra_CrsMatrix *result = nullptr;
     if (transposer.CreateTranspose(true, result, &rows) != 0 ||
         result == nullptr)
       throw std::runtime_error("transpose: Epetra could not transpose the "

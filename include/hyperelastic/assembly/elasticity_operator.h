@@ -181,10 +181,10 @@ namespace hyperelastic
       return !stiff_terms.empty();
     }
 
-    /// d f_int / dc_k of the material part for each constant of the model
-    /// (GenericAssembler::constant_forces), where the material part is the
-    /// generic FEValues one (the displacement formulation, P1 or P2) and
-    /// no other term depends on the constants (none is stiff: contact's
+    /// d f_int / dc_k of the material part for each constant of the model,
+    /// where the material part has them (ConstantForces: the generic FEValues
+    /// one of the displacement formulation, P1 or P2, and the mixed one)
+    /// and no other term depends on the constants (none is stiff: contact's
     /// automatic barrier stiffness follows the moduli); empty otherwise.
     /// Collective.
     std::vector<VectorType>

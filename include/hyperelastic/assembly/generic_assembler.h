@@ -9,12 +9,13 @@
 #include <deal.II/fe/mapping.h>
 
 #include <hyperelastic/assembly/assembler.h>
+#include <hyperelastic/assembly/constant_forces.h>
 #include <hyperelastic/assembly/point_materials.h>
 
 namespace hyperelastic
 {
   template <int dim>
-  class GenericAssembler : public Assembler<dim>
+  class GenericAssembler : public Assembler<dim>, public ConstantForces<dim>
   {
   public:
     GenericAssembler(const dealii::DoFHandler<dim> &dof_handler,
@@ -42,12 +43,10 @@ namespace hyperelastic
     accept_step(const VectorType &u) override;
 
     /// d f_int / dc_k = int dP/dc_k(F) grad N_a dV for each constant k of
-    /// the model (materials/constant_derivatives.h), owned rows, each
-    /// vector laid out like @p like; empty if a point's model does not
-    /// give them (on any rank). For sensitivities (a fit through a scene).
-    /// Collective.
+    /// the model (materials/constant_derivatives.h).
     std::vector<VectorType>
-    constant_forces(const VectorType &u, const VectorType &like) const;
+    constant_forces(const VectorType &u,
+                    const VectorType &like) const override;
 
   protected:
     const PointMaterials<dim> *

@@ -28,6 +28,7 @@
 #include <deal.II/fe/mapping.h>
 
 #include <hyperelastic/assembly/assembler.h>
+#include <hyperelastic/assembly/constant_forces.h>
 #include <hyperelastic/assembly/mixed_element.h>
 #include <hyperelastic/assembly/point_materials.h>
 #include <hyperelastic/materials/volumetric_split.h>
@@ -38,7 +39,7 @@
 namespace hyperelastic
 {
   template <int dim>
-  class MixedAssembler : public Assembler<dim>
+  class MixedAssembler : public Assembler<dim>, public ConstantForces<dim>
   {
   public:
     /// @p material must have a volumetric split (checked when the scene is
@@ -73,6 +74,17 @@ namespace hyperelastic
     /// bubble solved (MINI).
     void
     accept_step(const VectorType &u) override;
+
+    /// [dR_u/dc_k; dR_p/dc_k] (source/assembly/mixed_constant_forces.cc):
+    /// the isochoric stress's dP_iso/dc_k = dP/dc_k of the isochoric model
+    /// minus dkappa/dc_k (J^2 - 1)/2 F^-T, the pressure rows'
+    /// -dJ*(p)/dkappa dkappa/dc_k, the stabilisation's d(1/mu)/dc_k, and
+    /// MINI's bubble condensed: dr/dc = dR_r/dc - K_rb K_bb^-1 dR_b/dc.
+    /// Empty also where the model's bulk modulus is neither its entry
+    /// 'Bulk modulus' nor lambda + 2 mu / 3 of its Lame pair.
+    std::vector<VectorType>
+    constant_forces(const VectorType &u,
+                    const VectorType &like) const override;
 
   protected:
     /// The isochoric part at each point (with viscoelasticity it holds the

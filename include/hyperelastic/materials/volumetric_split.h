@@ -58,6 +58,18 @@ namespace hyperelastic
       return s >= 0. ? s + std::sqrt(s * s + 1.) : 1. / (std::sqrt(s * s + 1.) - s);
     }
 
+    /// dJ*/dkappa at fixed p: with s = p / kappa, J* = s + sqrt(s^2 + 1),
+    /// dJ*/ds = J* / sqrt(s^2 + 1) and ds/dkappa = -s / kappa (0 when
+    /// incompressible).
+    double
+    conjugate_J_bulk_derivative(const double p) const
+    {
+      if (incompressible())
+        return 0.;
+      const double s = p / kappa;
+      return -conjugate_J(p) * s / (kappa * std::sqrt(s * s + 1.));
+    }
+
     /// U*'(p) = J*(p) - 1.
     double
     conjugate_derivative(const double p) const
