@@ -7,6 +7,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <hyperelastic/assembly/assembly_tools.h>
 #include <hyperelastic/equilibrium_system.h>
 #include <hyperelastic/output/inverted_cell_policy.h>
 
@@ -314,7 +315,11 @@ namespace hyperelastic
                             internal_force.l2_norm(),
                             external_force.l2_norm(),
                             force_size.magnitude});
-    return {norm, force_scale, noise};
+    if (position_noise < 0.)
+      position_noise = 1e2 * std::numeric_limits<double>::epsilon() *
+                       reference_diameter(parts.dof_handler) *
+                       std::sqrt(double(parts.dof_handler.n_dofs()));
+    return {norm, force_scale, noise, position_noise};
   }
 
   template <int dim>

@@ -335,6 +335,8 @@ namespace hyperelastic
     bool predictor_linearization = false;
     /// Running maxima of the force and displacement norms (Newton's scales).
     double force_scale = 0.;
+    /// ResidualNorms::update_noise (computed on first use).
+    double position_noise = -1.;
     /// The right-hand side without the pinned motions' forces.
     VectorType pinned_rhs;
     /// The load terms' ForceSize at the last force assembly.

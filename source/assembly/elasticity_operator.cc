@@ -132,6 +132,7 @@ namespace hyperelastic
                                            VectorType       &internal,
                                            VectorType       &external) const
   {
+    follow_load_factor(t);
     const double noise = (p1 ? *p1 : *generic).internal_forces(u, internal);
     ForceSize    size  = load_forces(u, t, external);
     size.round_off += noise;
@@ -163,6 +164,7 @@ namespace hyperelastic
     VectorType                      &rhs,
     const TangentProjection          project_tangent) const
   {
+    follow_load_factor(t);
     // The kernel declines (on all ranks) constraints other than Dirichlet
     // and matrices without its node-block sparsity.
     if (!(p1 && p1->system(u, constraints, project_tangent, matrix, rhs)))
@@ -191,6 +193,7 @@ namespace hyperelastic
                                     const double      t,
                                     const bool        with_energy) const
   {
+    follow_load_factor(t);
     EnergyEvaluation result =
       (p1 ? *p1 : *generic).stored_energy(u, with_energy);
     if (!with_energy || terms.empty())

@@ -164,6 +164,11 @@ namespace hyperelastic
                "= mixed' yet");
       // The mixed formulation needs the model's volumetric split.
       const MaterialParameters &material = inputs.material;
+      if (material.growth.kind != GrowthParameters::Kind::none)
+        reject("Material/Growth",
+               "on",
+               "growth is not available with 'Problem/Formulation = "
+               "mixed' (the grown model has no volumetric-isochoric split)");
       if (!material_model(material.registered_model()).has_volumetric_split)
         {
           std::string with_split;

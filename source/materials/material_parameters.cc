@@ -5,6 +5,7 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/materials/material_parameters.h>
+#include <hyperelastic/materials/grown.h>
 #include <hyperelastic/materials/viscoelasticity.h>
 
 #include <algorithm>
@@ -101,6 +102,7 @@ namespace hyperelastic
     prm.enter_subsection("Viscoelasticity");
     ViscoelasticParameters::declare(prm);
     prm.leave_subsection();
+    GrowthParameters::declare(prm);
     prm.leave_subsection();
   }
 
@@ -130,6 +132,21 @@ namespace hyperelastic
                    model + " model has none");
         factory = MaterialFactory::of<Viscoelastic>(
           ViscoelasticConstants{factory, viscoelasticity});
+      }
+    growth.parse(prm);
+    if (growth.kind != GrowthParameters::Kind::none)
+      {
+        if (stiffness_warping || viscoelasticity.active())
+          reject("Material/Growth",
+                 prm.get("Growth"),
+                 stiffness_warping ?
+                   "stiffness warping is not a function of F and cannot "
+                   "grow" :
+                   "growth of a viscoelastic model is not available");
+        // The expressions parsed now: an error names its entry.
+        GrowthLaw(growth, "Material");
+        factory = MaterialFactory::of<Grown>(
+          GrowthConstants{factory, growth, section});
       }
     // Which entry, if any, makes the material exactly incompressible.
     incompressible_entry.clear();

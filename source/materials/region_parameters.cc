@@ -90,6 +90,7 @@ namespace hyperelastic
         if (used)
           try
             {
+              r.material.section = section + "/Material";
               r.material.parse(prm);
             }
           catch (const InputError &e)

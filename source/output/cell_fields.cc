@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values_extractors.h>
 
 #include <hyperelastic/assembly/material_point.h>
+#include <hyperelastic/materials/model_capabilities.h>
 #include <hyperelastic/output/cell_fields.h>
 
 #include <cmath>
@@ -37,6 +38,17 @@ namespace hyperelastic
       for (unsigned int r = 0; r < material.n_regions(); ++r)
         any_by_point = any_by_point || material.model(r).depends_on_position();
       return any_by_point;
+    }
+
+    /// Whether a model of @p material grows (then growth_J is written).
+    template <int dim>
+    bool
+    any_grows(const MaterialRegions<dim> &material)
+    {
+      for (unsigned int r = 0; r < material.n_regions(); ++r)
+        if (dynamic_cast<const GrowingMaterial *>(&material.model(r)))
+          return true;
+      return false;
     }
 
     /// The splits of each region's model of @p material and of its 3D twin
@@ -81,6 +93,8 @@ namespace hyperelastic
     {
       fields.J[index] /= volume;
       fields.energy_density[index] /= volume;
+      if (fields.growth_J.size() > 0)
+        fields.growth_J[index] /= volume;
       sigma /= volume;
       const unsigned int pairs[6][2] = {
         {0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
@@ -103,6 +117,8 @@ namespace hyperelastic
     const unsigned int n_cells =
       dof_handler.get_triangulation().n_active_cells();
     CellFields fields = zero_fields(n_cells);
+    if (any_grows(material))
+      fields.growth_J.reinit(n_cells);
 
     const QGaussSimplex<dim> quadrature(dof_handler.get_fe().degree);
     // A model whose constants vary with position (fibre directions) is
@@ -170,6 +186,14 @@ namespace hyperelastic
               const Tensor<2, 3> F3 = three_dimensional(F);
               const double J = determinant(F);
               fields.J[index] += J * JxW;
+              if (fields.growth_J.size() > 0)
+                {
+                  const auto *growing =
+                    dynamic_cast<const GrowingMaterial *>(&model);
+                  fields.growth_J[index] +=
+                    (growing ? determinant(growing->growth_tensor()) : 1.) *
+                    JxW;
+                }
               // Cauchy stress sigma = P F^T / J.
               if (mixed)
                 {

@@ -151,6 +151,10 @@ namespace hyperelastic
       data_out.add_data_vector(fields.region,
                                "region",
                                DataOut<dim>::type_cell_data);
+    if (fields.growth_J.size() > 0)
+      data_out.add_data_vector(fields.growth_J,
+                               "growth_J",
+                               DataOut<dim>::type_cell_data);
     Vector<float> rank(dof_handler.get_triangulation().n_active_cells());
     rank = static_cast<float>(Utilities::MPI::this_mpi_process(comm));
     data_out.add_data_vector(rank, "mpi_rank", DataOut<dim>::type_cell_data);

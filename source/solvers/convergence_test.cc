@@ -25,6 +25,7 @@ namespace hyperelastic
                              const double         solution_scale) const
   {
     return norms.residual <= residual_target(norms) &&
-           update <= update_tolerance * solution_scale;
+           update <= std::max(update_tolerance * solution_scale,
+                              norms.update_noise);
   }
 } // namespace hyperelastic

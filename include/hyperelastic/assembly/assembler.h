@@ -70,6 +70,15 @@ namespace hyperelastic
         points->begin_step(dt);
     }
 
+    /// A growing model (materials/grown.h): the evaluations to come are at
+    /// the load factor @p t (PointMaterials::set_load_factor). Collective.
+    void
+    set_load_factor(const double t) const
+    {
+      if (const PointMaterials<dim> *points = point_materials())
+        points->set_load_factor(t);
+    }
+
     /// A model with history: the step ended at @p u (ghosted); every
     /// quadrature point writes its new state (each assembler computes F
     /// its own way).

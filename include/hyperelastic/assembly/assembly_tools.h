@@ -1,11 +1,13 @@
 // Pieces every assembly loop shares: the round-off estimates of forces and
-// energies, the collective totals of an energy pass, the finiteness check of
-// a stress and tangent, and the text of a failure on one cell. The vector
+// energies (and the body's size they scale with), the collective totals of
+// an energy pass, the finiteness check of a stress and tangent, and the
+// text of a failure on one cell. The vector
 // and matrix types are in base/linear_algebra.h.
 #pragma once
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_handler.h>
 
 #include <hyperelastic/assembly/material_regions.h>
 #include <hyperelastic/base/linear_algebra.h>
@@ -29,6 +31,37 @@ namespace hyperelastic
     double noise = 0.;
     double min_J = 0.;
   };
+
+  /// The diagonal of the bounding box of the reference mesh (its locally
+  /// owned cells' vertices, over all ranks). Collective.
+  template <int dim>
+  double
+  reference_diameter(const dealii::DoFHandler<dim> &dof_handler)
+  {
+    dealii::Point<dim> low, high;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        low[d]  = std::numeric_limits<double>::max();
+        high[d] = -std::numeric_limits<double>::max();
+      }
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              low[d]  = std::min(low[d], cell->vertex(v)[d]);
+              high[d] = std::max(high[d], cell->vertex(v)[d]);
+            }
+    const MPI_Comm comm     = dof_handler.get_communicator();
+    double         squared = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double side = dealii::Utilities::MPI::max(high[d], comm) -
+                            dealii::Utilities::MPI::min(low[d], comm);
+        squared += side * side;
+      }
+    return std::sqrt(squared);
+  }
 
   /// @p values summed entry by entry over the ranks of @p comm
   /// (collective).

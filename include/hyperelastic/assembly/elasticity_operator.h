@@ -283,6 +283,16 @@ namespace hyperelastic
     }
 
   private:
+    /// Growing models (materials/grown.h) evaluate at the load factor @p t
+    /// (Assembler::set_load_factor; nothing for the other models).
+    void
+    follow_load_factor(const double t) const
+    {
+      generic->set_load_factor(t);
+      if (p1)
+        p1->set_load_factor(t);
+    }
+
     /// The summed forces of the terms independent of u at load factor t,
     /// owned entries; computed once per load factor (collective).
     const VectorType &

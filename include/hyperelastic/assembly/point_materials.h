@@ -6,7 +6,9 @@
 // the assembler's own quadrature, so that assembly evaluates a pure function
 // of F at each point and never an expression. For every other model nothing
 // is stored and the cell's model (its region's, assembly/material_regions.h)
-// is handed out: a scene pays only for the feature it uses.
+// is handed out: a scene pays only for the feature it uses. Grown models
+// (materials/grown.h) are per point too; set_load_factor() moves their growth
+// tensors along the load path.
 #pragma once
 
 #include <deal.II/base/mpi.h>
@@ -18,7 +20,9 @@
 #include <hyperelastic/assembly/material_regions.h>
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/materials/material.h>
+#include <hyperelastic/materials/model_capabilities.h>
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +41,7 @@ namespace hyperelastic
                    const dealii::Quadrature<dim> &quadrature)
         : regions(regions)
         , n_points(quadrature.size())
+        , communicator(dof_handler.get_communicator())
     {
       if (!regions.any_per_point())
         return;
@@ -63,6 +68,7 @@ namespace hyperelastic
                    const dealii::DoFHandler<dim> &dof_handler)
         : regions(regions)
         , n_points(1)
+        , communicator(dof_handler.get_communicator())
     {
       if (!regions.any_per_point())
         return;
@@ -97,6 +103,41 @@ namespace hyperelastic
     has_history() const
     {
       return !points.empty() && regions.any_history();
+    }
+
+    /// The growing models (GrowingMaterial) evaluate their growth tensors at
+    /// the load factor @p t from now on; an inadmissible one at some point
+    /// (det Fg <= 0) is an InputError on every rank. Nothing if no region
+    /// grows or @p t is the last load factor set. Collective.
+    void
+    set_load_factor(const double t) const
+    {
+      if (t == load_factor || points.empty())
+        return;
+      bool any = false;
+      for (unsigned int r = 0; r < regions.n_regions(); ++r)
+        if (const auto *growing =
+              dynamic_cast<const GrowingMaterial *>(&regions.model(r)))
+          {
+            growing->set_load_factor(t);
+            any = true;
+          }
+      if (!any)
+        return;
+      load_factor = t;
+      std::string problem;
+      try
+        {
+          for (const auto &point : points)
+            if (const auto *growing =
+                  dynamic_cast<const GrowingMaterial *>(point.get()))
+              growing->growth_tensor();
+        }
+      catch (const InputError &e)
+        {
+          problem = e.what();
+        }
+      throw_input_error_of_first_rank(problem, communicator);
     }
 
     /// Every point's next step lasts @p dt (Material::begin_step()).
@@ -178,6 +219,9 @@ namespace hyperelastic
 
     const MaterialRegions<dim> regions;
     const unsigned int         n_points;
+    const MPI_Comm             communicator;
+    /// The last load factor set (set_load_factor()).
+    mutable double load_factor = std::numeric_limits<double>::quiet_NaN();
     /// Empty unless some region's model is per point; then null at the
     /// points of the other regions' cells.
     std::vector<std::unique_ptr<Material<dim>>> points;

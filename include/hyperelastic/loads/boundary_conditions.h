@@ -13,6 +13,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <hyperelastic/base/expressions.h>
 #include <hyperelastic/loads/loading_parameters.h>
 
 #include <memory>
@@ -104,11 +105,4 @@ namespace hyperelastic
     return vertex.distance(x) <= 1e-8 * h;
   }
 
-  /// A function of (x, y, (z,) t) with one component per expression.
-  /// Throws InputError naming @p entry if an expression does not parse.
-  template <int dim>
-  std::unique_ptr<dealii::Function<dim>>
-  parse_vector_function(const std::vector<std::string>      &expressions,
-                        const std::map<std::string, double> &constants,
-                        const std::string                   &entry);
 } // namespace hyperelastic

@@ -39,6 +39,7 @@
 #include <hyperelastic/materials/constant_entries.h>
 #include <hyperelastic/materials/fibre_directions.h>
 #include <hyperelastic/materials/first_invariant_model.h>
+#include <hyperelastic/materials/model_capabilities.h>
 
 #include <cmath>
 #include <limits>
@@ -224,7 +225,8 @@ namespace hyperelastic
 
   template <int dim>
   class HolzapfelGasserOgden : public EvaluatedMaterial<dim>,
-                               public ConstantDerivatives<dim>
+                               public ConstantDerivatives<dim>,
+                               public FibreFamilies
   {
   public:
     using Constants = HolzapfelGasserOgdenConstants;
@@ -283,6 +285,12 @@ namespace hyperelastic
     small_strain_moduli() const override
     {
       return matrix.small_strain_moduli();
+    }
+
+    std::vector<dealii::Tensor<1, 3>>
+    fibre_directions() const override
+    {
+      return directions3d;
     }
 
     std::unique_ptr<Material<3>>

@@ -7,6 +7,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <hyperelastic/materials/growth.h>
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/materials/material_registry.h>
 #include <hyperelastic/materials/viscoelasticity.h>
@@ -45,6 +46,13 @@ namespace hyperelastic
     /// Material/Viscoelasticity (the factory then makes the viscoelastic
     /// model around the registered one).
     ViscoelasticParameters viscoelasticity;
+    /// Material/Growth and its entries (the factory then makes the grown
+    /// model around the registered one, materials/grown.h).
+    GrowthParameters growth;
+    /// The subsection's path in messages that arise while the scene runs
+    /// (a growth tensor that inverts): 'Material', or 'Region k/Material'
+    /// (set before parse()).
+    std::string section = "Material";
     /// The entry (and its value) that makes the material exactly
     /// incompressible (a bulk modulus 'inf', Poisson's ratio 0.5); empty if
     /// none. Only the mixed formulation accepts it.

@@ -27,6 +27,9 @@ namespace hyperelastic
     /// The number k of each cell's 'Region k' (0: the top-level Material);
     /// empty (not written) for a scene without regions.
     dealii::Vector<double> region;
+    /// det Fg of the growth tensor (materials/grown.h), 1 where a region
+    /// does not grow; empty (not written) for a scene without growth.
+    dealii::Vector<double> growth_J;
   };
 
   /// The fields of the locally owned cells for displacement @p u (with

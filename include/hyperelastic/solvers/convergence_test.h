@@ -27,6 +27,12 @@ namespace hyperelastic
     /// computed near J = 1; inertia: c M (u - w) of large u and w):
     /// residuals below it count as zero.
     double noise = 0.;
+    /// Round-off level of the unknowns (for a displacement: a hundred
+    /// machine epsilons of the body's size per unknown, in the l2 norm):
+    /// an update below it counts as zero, also where the solution itself
+    /// stays at rest (a confined body growing, a body prestressed at rest),
+    /// which the relative update test cannot measure against.
+    double update_noise = 0.;
   };
 
   class ConvergenceTest
