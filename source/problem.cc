@@ -130,6 +130,26 @@ namespace hyperelastic
 
   template <int dim>
   void
+  Problem<dim>::move_reference(const VectorType &shift)
+  {
+    reset_run();
+    std::vector<bool> moved(model.triangulation->n_vertices(), false);
+    for (const auto &cell : model.dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          if (!moved[cell->vertex_index(v)])
+            {
+              moved[cell->vertex_index(v)] = true;
+              for (unsigned int d = 0; d < dim; ++d)
+                cell->vertex(v)[d] += shift(cell->vertex_dof_index(v, d));
+            }
+    step_summaries.clear();
+    n_frames  = 0;
+    is_set_up = false;
+  }
+
+  template <int dim>
+  void
   Problem<dim>::reset_run()
   {
     // In the reverse order of their set-up: each refers to those before.

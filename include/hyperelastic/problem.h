@@ -174,6 +174,14 @@ namespace hyperelastic
     rebuild_materials(const MaterialParameters            &material,
                       const std::vector<RegionParameters> &regions);
 
+    /// Moves every vertex of the reference mesh by the displacement
+    /// components of @p shift at it (laid out like solution(), with ghost
+    /// entries); the next run() starts anew from the unloaded state on the
+    /// moved mesh, with the same dofs and loads (an inverse problem's
+    /// iterate, unloaded_shape.h). Collective.
+    void
+    move_reference(const VectorType &shift);
+
     /// At the converged state just reported (call it from the step
     /// observer): the derivatives of the CSV column reaction_<id>_<axis>
     /// with respect to the model's constants (in the order of its

@@ -50,6 +50,32 @@ namespace hyperelastic
       "order with Dohrmann-Bochev pressure-projection stabilisation "
       "-1/mu int (p - Pi0 p)(q - Pi0 q)), 'P2/P1' (Taylor-Hood). All are "
       "inf-sup stable in 2D and 3D.");
+    prm.declare_entry(
+      "Reference",
+      "as meshed",
+      Selection("as meshed|loaded"),
+      "'as meshed': the mesh is the body's reference (unloaded) "
+      "configuration. 'loaded': the mesh is the deformed configuration under "
+      "the scene's loads at t = 1 (an imaged organ, a part measured under "
+      "load); the run first finds the reference configuration whose forward "
+      "solution reproduces it (backward-displacement fixed point with Aitken "
+      "relaxation: a forward solve per iteration), writes it to "
+      "Output/Directory as <Base name>_reference.msh (ASCII gmsh 4.1, the "
+      "mesh file's tags) and then runs the scene from it. Needs a gmsh .msh "
+      "mesh file; not with contact.");
+    prm.declare_entry("Reference tolerance",
+                      "1e-8",
+                      Double(1e-15, 1e-2),
+                      "'Reference = loaded': the iteration stops where every "
+                      "vertex of the forward solution lies within this "
+                      "fraction of the mesh's diagonal of its place in the "
+                      "loaded mesh.");
+    prm.declare_entry("Reference iterations",
+                      "50",
+                      Integer(1, 1000),
+                      "'Reference = loaded': at most this many forward "
+                      "solves; not reaching the tolerance is a convergence "
+                      "failure.");
     prm.leave_subsection();
   }
 
@@ -65,6 +91,9 @@ namespace hyperelastic
     mixed_element             = element == "P2/P1" ? MixedElement::taylor_hood
                                 : element == "P1/P1 stabilized" ? MixedElement::stabilized
                                                                 : MixedElement::mini;
+    reference_loaded     = prm.get("Reference") == "loaded";
+    reference_tolerance  = prm.get_double("Reference tolerance");
+    reference_iterations = prm.get_integer("Reference iterations");
     prm.leave_subsection();
   }
 

@@ -14,6 +14,8 @@
 #include <hyperelastic/materials/material_parameters.h>
 #include <hyperelastic/solvers/linear_solver_parameters.h>
 
+#include <array>
+
 namespace hyperelastic
 {
   using namespace dealii;
@@ -166,7 +168,11 @@ namespace hyperelastic
       const MaterialParameters &material = inputs.material;
       if (material.growth.kind != GrowthParameters::Kind::none)
         reject("Material/Growth",
-               "on",
+               std::array<const char *, 4>{
+                 "none",
+                 "isotropic",
+                 "fibre",
+                 "tensor"}[static_cast<int>(material.growth.kind)],
                "growth is not available with 'Problem/Formulation = "
                "mixed' (the grown model has no volumetric-isochoric split)");
       if (!material_model(material.registered_model()).has_volumetric_split)

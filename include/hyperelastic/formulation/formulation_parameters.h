@@ -28,6 +28,16 @@ namespace hyperelastic
     /// (formulation/formulation_registry.h).
     std::string  formulation   = "displacement";
     MixedElement mixed_element = MixedElement::mini;
+    /// Problem/Reference = loaded: the mesh is the deformed configuration
+    /// under the scene's loads at t = 1, and the run first finds the
+    /// reference configuration that deforms into it (unloaded_shape.h).
+    bool reference_loaded = false;
+    /// Problem/Reference tolerance: the largest vertex distance between the
+    /// forward solution and the loaded mesh, relative to the mesh's
+    /// diagonal, at which the unloaded shape is taken.
+    double reference_tolerance = 1e-8;
+    /// Problem/Reference iterations: at most this many forward solves.
+    unsigned int reference_iterations = 50;
 
     static void
     declare(ParameterHandler &prm);
