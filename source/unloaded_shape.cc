@@ -141,10 +141,12 @@ namespace hyperelastic
         const VectorType r        = position_misfit(problem, target, comm);
         const double     distance = largest_distance(dof_handler, r) / diagonal;
         shape.distances.push_back(distance);
-        pcout << "Reference = loaded: forward solve " << k
-              << ", largest vertex distance to the loaded mesh "
-              << std::setprecision(3) << std::scientific << distance
-              << " of the diagonal" << std::defaultfloat << std::endl;
+        std::ostringstream line;
+        line << "Reference = loaded: forward solve " << k
+             << ", largest vertex distance to the loaded mesh "
+             << std::setprecision(3) << std::scientific << distance
+             << " of the diagonal";
+        pcout << line.str() << std::endl;
         if (distance <= parameters.reference_tolerance)
           break;
         if (k >= parameters.reference_iterations)
@@ -163,6 +165,11 @@ namespace hyperelastic
             const double squared = change * change;
             if (squared > 0.)
               omega = -omega * (previous * change) / squared;
+            // Aitken's factor kept in (0, 2]: a reversed or very long
+            // step would fold the moved mesh.
+            if (!(omega > 0.05))
+              omega = 0.05;
+            omega = std::min(omega, 2.);
           }
         shape.relaxation.push_back(omega);
         previous = r;
@@ -215,6 +222,7 @@ namespace hyperelastic
           std::vector<std::size_t> tags;
           std::vector<double>      coordinates, parametric;
           gmsh::model::mesh::getNodes(tags, coordinates, parametric);
+          std::size_t matched = 0;
           for (std::size_t n = 0; n < tags.size(); ++n)
             {
               const std::array<double, 3> x = {coordinates[3 * n],
@@ -224,11 +232,19 @@ namespace hyperelastic
               const auto found = reference.find(x);
               if (found == reference.end())
                 continue;
+              ++matched;
               const std::array<double, 3> &X = found->second;
               gmsh::model::mesh::setNode(tags[n], {X[0], X[1], X[2]}, {});
             }
+          if (matched != reference.size())
+            throw std::runtime_error(
+              std::to_string(reference.size() - matched) + " of the mesh's " +
+              std::to_string(reference.size()) + " vertices are no node of " +
+              mesh_file);
           gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
           gmsh::option::setNumber("Mesh.Binary", 0);
+          // Every element, also those of no physical group.
+          gmsh::option::setNumber("Mesh.SaveAll", 1);
           gmsh::write(path);
         }
       catch (const std::exception &e)
@@ -260,6 +276,18 @@ namespace hyperelastic
              "loaded",
              "contact is not available with the search for the unloaded "
              "shape (its gaps belong to the loaded configuration)");
+    if (parameters.mesh.global_refinements > 0)
+      reject("Problem/Reference",
+             "loaded",
+             "the loaded mesh is searched as it is in the file: 'Mesh/Global "
+             "refinements' must be 0 (the written reference would lose the "
+             "refined vertices)");
+    if (!parameters.restart_checkpoint.empty() ||
+        parameters.output.checkpoint_every > 0)
+      reject("Problem/Reference",
+             "loaded",
+             "checkpoints and restarts belong to one reference "
+             "configuration; the search runs one per iterate");
   }
 
   template UnloadedShape

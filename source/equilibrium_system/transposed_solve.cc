@@ -25,12 +25,21 @@ namespace hyperelastic
     x = 0.;
     dealii::TimerOutput::Scope scope(parts.timer, "linear solve");
     // A hierarchy for K^T, and one built anew for the next tangent: the
-    // kept one must not outlive the matrix it was built on.
-    parts.linear_solver.forget_preconditioner();
-    parts.linear_solver.prepare(transposed);
-    const unsigned int iterations = parts.linear_solver.solve(
+    // kept one must not outlive the matrix it was built on (also when the
+    // solve throws).
+    LinearSolver &solver = parts.linear_solver;
+    solver.forget_preconditioner();
+    struct Forget
+    {
+      LinearSolver &solver;
+      ~Forget()
+      {
+        solver.forget_preconditioner();
+      }
+    } forget{solver};
+    solver.prepare(transposed);
+    const unsigned int iterations = solver.solve(
       transposed, x, rhs, parts.linear_solver_parameters.relative_tolerance);
-    parts.linear_solver.forget_preconditioner();
     homogeneous_constraints.distribute(x);
     return iterations;
   }

@@ -62,7 +62,8 @@ namespace hyperelastic
       "relaxation: a forward solve per iteration), writes it to "
       "Output/Directory as <Base name>_reference.msh (ASCII gmsh 4.1, the "
       "mesh file's tags) and then runs the scene from it. Needs a gmsh .msh "
-      "mesh file; not with contact.");
+      "mesh file without global refinements; not with contact, checkpoints "
+      "or a restart.");
     prm.declare_entry("Reference tolerance",
                       "1e-8",
                       Double(1e-15, 1e-2),
