@@ -374,9 +374,13 @@ namespace hyperelastic
 
   template <int dim>
   LaggedUpdate
-  EquilibriumSystem<dim>::update_lagged(const LagMoment moment)
+  EquilibriumSystem<dim>::update_lagged(const LagMoment moment,
+                                        const double    unbalanced_force)
   {
-    return elasticity->update_lagged(u_ghosted, current_load_factor, moment);
+    return elasticity->update_lagged(u_ghosted,
+                                     current_load_factor,
+                                     moment,
+                                     unbalanced_force);
   }
 
   // ------------------------------------------------------- SteppedSystem

@@ -13,7 +13,7 @@ The load factor t is the references' time halved, T = 2 t.
 
   /usr/bin/python3 benchmarks/ironing/run.py --label NAME [--exe BUILD/hyperelastic]
         [--h 0.1] [--steps 400] [--mu 0.3,0]
-  /usr/bin/python3 benchmarks/ironing/run.py --plot    # redraw ironing.png (finest h)
+  /usr/bin/python3 benchmarks/ironing/run.py --plot    # redraw ironing.png (finest h of each mu)
   /usr/bin/python3 benchmarks/ironing/run.py --table   # ironing.csv as tables
   /usr/bin/python3 benchmarks/ironing/run.py --summarise-again  # ironing.csv from runs/
 
@@ -271,12 +271,14 @@ def plot():
         ts = [t for t in sorted(fx) if t in fy and t >= 1 and fy[t] > 0]
         ratio_axis.plot(ts, [abs(fx[t] / fy[t]) for t in ts], lw=0.7,
                         label=CODE_NAMES[code])
-    # The runs on the finest mesh only (all of them are in the tables), a
-    # colour per label, dashed without friction.
+    # For each friction coefficient the runs on its finest mesh only (all of
+    # them are in the tables), a colour per label, dashed without friction.
     colours = "brkgm"
     summary = read_csv(SUMMARY) if os.path.exists(SUMMARY) else []
-    finest = min((float(r["h"]) for r in summary), default=0)
-    summary = [r for r in summary if float(r["h"]) == finest]
+    finest = {}
+    for r in summary:
+        finest[r["mu"]] = min(finest.get(r["mu"], 1e300), float(r["h"]))
+    summary = [r for r in summary if float(r["h"]) == finest[r["mu"]]]
     labels = sorted(set(r["label"] for r in summary))
     for r in summary:
         path = os.path.join(RUNS, run_name(r["label"], r["h"], r["steps"],

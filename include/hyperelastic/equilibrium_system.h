@@ -167,7 +167,7 @@ namespace hyperelastic
 
     // LaggedSystem: the load terms' lagged quantities (friction).
     LaggedUpdate
-    update_lagged(LagMoment moment) override;
+    update_lagged(LagMoment moment, double unbalanced_force) override;
 
     // PredictorSoftening: the predictor's update inverts cells of a state
     // without inverted ones (a large prescribed increment, the tangent's

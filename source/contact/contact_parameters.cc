@@ -54,9 +54,10 @@ namespace hyperelastic
       Integer(0),
       "How many times a step may take friction's normal forces and tangent "
       "directions again: within Newton's iterations after each full step "
-      "or once the residual has fallen by 10 (a change of more than half "
-      "the largest normal force "
-      "waits for a smaller residual), and at the converged state, after "
+      "or once the residual has fallen by 10, where the residual is below "
+      "half the largest normal force (an iterate far from equilibrium has "
+      "a barrier's normal forces of no equilibrium), and at the converged "
+      "state, after "
       "which Newton goes on with them. They start from the last step's, "
       "quasi-statically extrapolated from the last two steps. No update "
       "once no normal force changes by more than 1e-3 of the largest. 0: "

@@ -825,7 +825,8 @@ namespace hyperelastic
   LaggedUpdate
   ObstacleContact<dim>::update_lagged(const VectorType &u,
                                       const double      t,
-                                      const LagMoment   moment)
+                                      const LagMoment   moment,
+                                      const double      unbalanced_force)
   {
     if (!has_friction() || !lagging.may_update())
       return LaggedUpdate::unchanged;
@@ -839,7 +840,8 @@ namespace hyperelastic
                                    lagged[i].normal_force_after(since_start)));
         largest = std::max(largest, next[i].normal_force);
       }
-    return lagging.take_if_changed(change, largest, moment, comm, lagged, next);
+    return lagging.take_if_changed(
+      change, largest, {moment, unbalanced_force}, comm, lagged, next);
   }
 
   template <int dim>

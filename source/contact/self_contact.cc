@@ -620,7 +620,8 @@ namespace hyperelastic
   LaggedUpdate
   SelfContact<dim>::update_lagged(const VectorType &u,
                                   const double,
-                                  const LagMoment moment)
+                                  const LagMoment moment,
+                                  const double    unbalanced_force)
   {
     // Not at the dynamics guess: its pairs are not the answer's (taken
     // there, the block sliding on a block of tests/self_contact.cc
@@ -648,7 +649,8 @@ namespace hyperelastic
       }
     for (const auto &[pair, force] : before)
       change = std::max(change, force);
-    return lagging.take_if_changed(change, largest, moment, comm, lagged, next);
+    return lagging.take_if_changed(
+      change, largest, {moment, unbalanced_force}, comm, lagged, next);
   }
 
   template <int dim>

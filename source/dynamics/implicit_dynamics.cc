@@ -200,7 +200,8 @@ namespace hyperelastic
         // follow (self contact keeps those of u_n).
         context.elasticity.update_lagged(u_ghosted,
                                          solved,
-                                         LagMoment::predicted);
+                                         LagMoment::predicted,
+                                         0.);
       }
   }
 

@@ -606,8 +606,9 @@ namespace hyperelastic
       }
     // The lagged quantities at the converged state: if they changed, the
     // equations are new and Newton goes on from here.
-    if (state.lagged && state.lagged->update_lagged(LagMoment::converged) ==
-                          LaggedUpdate::updated)
+    if (state.lagged &&
+        state.lagged->update_lagged(LagMoment::converged, norms.residual) ==
+          LaggedUpdate::updated)
       {
         row.probed_stable = false;
         lagged_quantities_updated(system, it, state);
@@ -651,7 +652,9 @@ namespace hyperelastic
     // update that changed nothing does not stop the following: the
     // iterates move on, and a change found only at the converged state
     // costs the new equations' whole convergence (block between plates,
-    // step 3: 12 Newton iterations against 9).
+    // step 3: 12 Newton iterations against 9). The system is told the
+    // iterate's residual: it may find the iterate too far from equilibrium
+    // for its lagged quantities (FrictionLagging) and keep them.
     if (state.early_lag_residual < 0.)
       {
         state.early_lag_residual = early_lag_reduction * norms.residual;
@@ -661,7 +664,8 @@ namespace hyperelastic
     else if (!(norms.residual <= state.early_lag_residual || full_step))
       return;
     const LaggedUpdate outcome =
-      state.lagged ? state.lagged->update_lagged(LagMoment::within_solve)
+      state.lagged ? state.lagged->update_lagged(LagMoment::within_solve,
+                                                 norms.residual)
                    : LaggedUpdate::unchanged;
     if (outcome == LaggedUpdate::unchanged)
       {

@@ -243,11 +243,15 @@ namespace hyperelastic
         term->project_trial(u, trial, t, constraints);
     }
     LaggedUpdate
-    update_lagged(const VectorType &u, const double t, const LagMoment moment)
+    update_lagged(const VectorType &u,
+                  const double      t,
+                  const LagMoment   moment,
+                  const double      unbalanced_force)
     {
       LaggedUpdate outcome = LaggedUpdate::unchanged;
       for (SteppedTerm<dim> *term : stepped_terms)
-        outcome = combine(outcome, term->update_lagged(u, t, moment));
+        outcome = combine(outcome,
+                          term->update_lagged(u, t, moment, unbalanced_force));
       return outcome;
     }
 

@@ -49,13 +49,17 @@ namespace hyperelastic
     set_end_state_map(double c, double weight) = 0;
 
     /// At the iterate @p u (ghosted), converged, within the solve or the
-    /// step's predicted start (@p moment): updates the quantities the term
-    /// lags behind the iterate (friction's normal forces and tangents);
-    /// returns whether they changed enough that Newton must go on with
-    /// them (updated) or too little to matter (see FrictionLagging).
-    /// Collective.
+    /// step's predicted start (@p moment), where the residual on the free
+    /// unknowns has the l2 norm @p unbalanced_force (0 at a prediction):
+    /// updates the quantities the term lags behind the iterate (friction's
+    /// normal forces and tangents); returns whether they changed enough
+    /// that Newton must go on with them (updated) or too little to matter
+    /// or not yet (see FrictionLagging). Collective.
     virtual LaggedUpdate
-    update_lagged(const VectorType &u, double t, LagMoment moment) = 0;
+    update_lagged(const VectorType &u,
+                  double            t,
+                  LagMoment         moment,
+                  double            unbalanced_force) = 0;
 
     /// After begin_step(), when the converged state before it is known:
     /// @p u_before (owned entries are read) at @p t_before < t_start. A

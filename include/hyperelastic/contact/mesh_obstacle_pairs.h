@@ -137,7 +137,7 @@ namespace hyperelastic
     }
     /// Frictionless: nothing lagged.
     LaggedUpdate
-    update_lagged(const VectorType &, double, LagMoment) override
+    update_lagged(const VectorType &, double, LagMoment, double) override
     {
       return LaggedUpdate::unchanged;
     }

@@ -147,7 +147,10 @@ namespace hyperelastic
     void
     advance(double alpha, double t) override;
     LaggedUpdate
-    update_lagged(const VectorType &u, double t, LagMoment moment) override;
+    update_lagged(const VectorType &u,
+                  double            t,
+                  LagMoment         moment,
+                  double            unbalanced_force) override;
     /// Friction's normal forces grow (or fall) within the step at the rate
     /// they had between @p u_before at @p t_before and the step's start,
     /// where both are positive, until the first update replaces them.

@@ -145,7 +145,10 @@ namespace hyperelastic
     /// by more than 1e-3 of the largest (at most 'Friction lagging updates'
     /// times a step).
     LaggedUpdate
-    update_lagged(const VectorType &u, double t, LagMoment moment) override;
+    update_lagged(const VectorType &u,
+                  double            t,
+                  LagMoment         moment,
+                  double            unbalanced_force) override;
 
     bool
     needs_new_couplings(const VectorType &u, double t) override;

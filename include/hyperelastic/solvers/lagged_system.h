@@ -16,10 +16,11 @@ namespace hyperelastic
 
     /// Takes the lagged quantities again at the current iterate, at the
     /// @p moment Newton is at (a converged state of the current equations,
-    /// or an iterate within the solve); returns whether they changed
+    /// or an iterate within the solve), whose residual on the free unknowns
+    /// has the l2 norm @p unbalanced_force; returns whether they changed
     /// (updated: the energy of the current iterate is new) or changed too
-    /// little.
+    /// little, or are not to be taken at this iterate (unchanged).
     virtual LaggedUpdate
-    update_lagged(LagMoment moment) = 0;
+    update_lagged(LagMoment moment, double unbalanced_force) = 0;
   };
 } // namespace hyperelastic
