@@ -86,17 +86,6 @@ namespace
                plane(2, "0, 0, 1.001", "0, 0, -1", "0; 0; -0.3*t", mu));
   }
 
-  /// Newton iterations over all steps of a run.
-  template <typename Summaries>
-  double
-  newton_iterations(const Summaries &summaries)
-  {
-    double sum = 0.;
-    for (const auto &row : summaries)
-      sum += column(row, "newton_iterations");
-    return sum;
-  }
-
   template <typename Scene>
   void
   compare(Checker &checker, const std::string &name, Scene &&scene)
@@ -111,8 +100,8 @@ namespace
                   1e-12);
     checker.at_most(name + ": Newton iterations with mu = 0.5 / frictionless "
                            "ones (issue 43's target)",
-                    newton_iterations(with->summaries()) /
-                      newton_iterations(frictionless->summaries()),
+                    total(with->summaries(), "newton_iterations") /
+                      total(frictionless->summaries(), "newton_iterations"),
                     1.5);
     if (name == "block on plane")
       // The block slides throughout (v = 2 - 5 t > 0 up to t = 0.3):

@@ -1,7 +1,7 @@
 // Reading a run's step summaries by CSV column name: one value, the step
 // that ends at a given time, and the mean rate of change of a column (e.g.
 // an acceleration from the momentum) between two times, the smallest
-// value over the steps.
+// value over the steps and the sum over them.
 #pragma once
 
 #include <hyperelastic/output/step_summary.h>
@@ -59,6 +59,18 @@ namespace hyperelastic::testing
     double result = std::numeric_limits<double>::infinity();
     for (const auto &s : summaries)
       result = std::min(result, column(s, name));
+    return result;
+  }
+
+  /// The sum of column @p name over @p summaries (e.g. a run's Newton
+  /// iterations in all).
+  template <int dim>
+  double
+  total(const std::vector<StepSummary<dim>> &summaries, const std::string &name)
+  {
+    double result = 0.;
+    for (const auto &s : summaries)
+      result += column(s, name);
     return result;
   }
 } // namespace hyperelastic::testing
