@@ -37,14 +37,7 @@ namespace
                             entry("Young's modulus", "1") +
                               entry("Poisson's ratio", "0.3"),
                             lame_parameters(1. / 2.6, 0.3 / (1.3 * 0.4))) +
-           subsection("Loading", entry("Number of load steps", "2")) +
-           dirichlet(1,
-                     2,
-                     "x, y",
-                     "0.2*t*x/sqrt(x^2 + y^2); 0.2*t*y/sqrt(x^2 + y^2)") +
-           subsection("Pressure 1",
-                      entry("Boundary id", "1") +
-                        entry("Pressure", std::to_string(p) + "*t")) +
+           cylinder_inflation_loading(p) +
            subsection("Newton",
                       entry("Max iterations", "30") +
                         entry("Absolute residual tolerance", "1e-15") +
@@ -90,8 +83,7 @@ namespace
         Parameters parameters;
         parameters.read_from_string(
           scene(meshes + "/annulus_2d_16.msh", model));
-        const auto material =
-          create_material<2>(parameters.material);
+        const auto material = create_material<2>(parameters.material);
         const RadialInflation<2> reference(
           *material, inner, outer, p, outer_deformed, 20000);
         const RadialInflation<2> check_reference(

@@ -96,15 +96,7 @@ namespace
                       entry("Model", "neo-Hookean") +
                         entry("Young's modulus", "1") +
                         entry("Poisson's ratio", "0.3")) +
-           subsection("Loading", entry("Number of load steps", "2")) +
-           dirichlet(1,
-                     2,
-                     "x, y",
-                     "0.2*t*x/sqrt(x^2 + y^2); 0.2*t*y/sqrt(x^2 + y^2)") +
-           subsection("Pressure 1",
-                      entry("Boundary id", "1") +
-                        entry("Pressure", number(p) + "*t")) +
-           tight_solver("direct") +
+           cylinder_inflation_loading(p) + tight_solver("direct") +
            subsection("Output",
                       entry("Directory", "unloaded_shape_output") +
                         entry("Base name", base) + entry("Write VTU", "false") +
@@ -143,9 +135,9 @@ namespace
                 high = std::max(high, r);
               }
     const MPI_Comm comm = dofs.get_communicator();
-    return {Utilities::MPI::sum(sum, comm) / Utilities::MPI::sum(count, comm),
-            Utilities::MPI::min(low, comm),
-            Utilities::MPI::max(high, comm)};
+    return {{Utilities::MPI::sum(sum, comm) / Utilities::MPI::sum(count, comm),
+             Utilities::MPI::min(low, comm),
+             Utilities::MPI::max(high, comm)}};
   }
 } // namespace
 

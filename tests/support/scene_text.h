@@ -148,6 +148,21 @@ namespace hyperelastic::testing
                         entry("Body force", "0; 0; -0.05")) +
            dirichlet(1, 0, "x, y, z", "0; 0; 0") + twisted_end("0", "pi/2*t");
   }
+  /// The thick cylinder of tests/inflation.cc and tests/unloaded_shape.cc
+  /// in 2 load steps: its outer circle (id 2, radius 2) moved radially by
+  /// 0.2 t, the follower pressure @p p t on its inner one (id 1).
+  inline std::string
+  cylinder_inflation_loading(const double p)
+  {
+    return subsection("Loading", entry("Number of load steps", "2")) +
+           dirichlet(1,
+                     2,
+                     "x, y",
+                     "0.2*t*x/sqrt(x^2 + y^2); 0.2*t*y/sqrt(x^2 + y^2)") +
+           subsection("Pressure 1",
+                      entry("Boundary id", "1") +
+                        entry("Pressure", number(p) + "*t"));
+  }
   /// Homogeneous uniaxial stretch: the bar [0,3] x [0,1] (x [0,1]) of the
   /// model @p model (its own subsection's @p model_entries) on symmetry
   /// rollers (x = 0, y = 0, z = 0), its end x = 3 moved to the stretch
