@@ -279,6 +279,13 @@ namespace hyperelastic
     if (pcout.is_active())
       for (const StepReporter<dim> *reporter : reporters)
         reporter->print_cost(pcout.get_stream());
+    if (newton_per_nominal_step > 0.)
+      pcout << "\nNewton iterations: " << newton_in_all
+            << " in all (failed attempts included), " << std::fixed
+            << std::setprecision(2) << newton_per_nominal_step
+            << " per nominal step; smallest step " << std::defaultfloat
+            << std::setprecision(3) << smallest_step_fraction
+            << " of the nominal one" << std::setprecision(6) << std::endl;
     pcout << "\nSummary per load step: " << writer->csv_file();
     if (parameters.output.write_vtu)
       pcout << "; fields for ParaView: " << parameters.output.directory << "/"

@@ -226,10 +226,17 @@ namespace hyperelastic
     // checkpoint).
     const double t0   = resume_point ? resume_point->t : 0.;
     const double done = (step.load_factor - t0) / (t_end - t0);
+    newton_in_all           = step.newton_in_all;
+    newton_per_nominal_step = step.newton_per_nominal_step();
+    smallest_step_fraction =
+      step.nominal > 0. ? step.smallest_increment / step.nominal : 0.;
     pcout << "   progress: t = " << step.load_factor << " of " << t_end << ", "
           << std::fixed << std::setprecision(1) << elapsed << " s elapsed";
     if (!along_path && done > 0. && done < 1.)
       pcout << ", about " << elapsed * (1. - done) / done << " s to go";
+    if (!along_path)
+      pcout << "; " << newton_per_nominal_step
+            << " Newton iterations per nominal step";
     pcout << std::defaultfloat << std::setprecision(6) << std::endl;
   }
 

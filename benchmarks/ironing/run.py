@@ -73,7 +73,9 @@ LOG_COUNTS = [("its_projected", r"^\s+\d+\s.*\bprojected\b"),
 FIELDS = (["label", "h", "steps", "mu", "exit", "rows", "t_end"] +
           ["fx_%g" % t for t in TIMES] + ["fy_%g" % t for t in TIMES] +
           ["fx_in_envelope", "fy_in_envelope", "mu_g_1.5",
-           "ratio_mean", "ratio_max", "newton_per_row", "cg_per_newton",
+           "ratio_mean", "ratio_max", "newton_per_row",
+           "newton_per_nominal", "press_per_nominal", "slide_per_nominal",
+           "in_all_per_nominal", "cg_per_newton",
            "cut_backs", "smallest_step_fraction", "wall_s", "cpu_s"] +
           [name for name, _ in LOG_COUNTS])
 
@@ -127,8 +129,9 @@ def mesh(h):
     return path
 
 
-def run(exe, h, steps, mu):
-    """Runs the scene; returns its rows, exit code, log, wall and CPU time."""
+def run(exe, h, steps, mu, extra=()):
+    """Runs the scene (with EXTRA settings SECTION/ENTRY=VALUE appended);
+    returns its rows, exit code, log, wall and CPU time."""
     settings = """
 subsection Mesh
   set File = {mesh}
@@ -150,6 +153,13 @@ end
         with open(prm, "w") as f:
             f.write(open(SCENE).read() + settings.format(
                 mesh=mesh(h), steps=steps, mu=mu, out=out))
+            for setting in extra:
+                entry, value = setting.split("=", 1)
+                sections = entry.split("/")
+                for section in sections[:-1]:
+                    f.write("subsection %s\n" % section)
+                f.write("set %s = %s\n" % (sections[-1], value))
+                f.write("end\n" * (len(sections) - 1))
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
         start = time.time()
         done = subprocess.run([MPIRUN, "-np", "2", exe, prm],
@@ -197,6 +207,13 @@ def summarise(rows, steps, mu, table):
     newton = sum(int(r["newton_iterations"]) for r in rows)
     linear = sum(int(r["linear_iterations"]) for r in rows)
     s["newton_per_row"] = "%.2f" % (newton / len(rows))
+    # Per nominal step (issue 67): the CSV's Newton iterations over the
+    # nominal steps of the run, of the press (t <= 0.5) and of the slide.
+    s["newton_per_nominal"] = "%.2f" % (newton / steps)
+    press = sum(int(r["newton_iterations"]) for r in rows
+                if float(r["load_factor"]) <= 0.5 + 1e-9)
+    s["press_per_nominal"] = "%.2f" % (press / (steps / 2))
+    s["slide_per_nominal"] = "%.2f" % ((newton - press) / (steps / 2))
     s["cg_per_newton"] = "%.2f" % (linear / max(newton, 1))
     s["cut_backs"] = sum(int(r["cut_backs"]) for r in rows)
     s["smallest_step_fraction"] = "%.4g" % (
@@ -324,6 +341,9 @@ def main():
     parser.add_argument("--h", type=float, default=0.1)
     parser.add_argument("--steps", type=int, default=400)
     parser.add_argument("--mu", default="0.3,0")
+    parser.add_argument("--set", action="append", default=[],
+                        metavar="SECTION/ENTRY=VALUE",
+                        help="a setting appended to the scene (repeatable)")
     parser.add_argument("--plot", action="store_true")
     parser.add_argument("--table", action="store_true")
     parser.add_argument("--summarise-again", action="store_true",
@@ -350,13 +370,19 @@ def main():
         table = references()
         os.makedirs(RUNS, exist_ok=True)
         for mu in [float(m) for m in args.mu.split(",")]:
-            rows, code, log, wall, cpu = run(args.exe, args.h, args.steps, mu)
+            rows, code, log, wall, cpu = run(args.exe, args.h, args.steps, mu,
+                                             args.set)
             result = {"label": args.label, "h": "%g" % args.h,
                       "steps": args.steps, "mu": "%g" % mu, "exit": code,
                       "wall_s": "%.0f" % wall, "cpu_s": "%.0f" % cpu}
             result.update(summarise(rows, args.steps, mu, table))
             for name, pattern in LOG_COUNTS:
                 result[name] = len(re.findall(pattern, log, re.MULTILINE))
+            # The run's own count, failed attempts included (closing line).
+            in_all = re.search(r"Newton iterations: (\d+) in all", log)
+            if in_all:
+                result["in_all_per_nominal"] = "%.2f" % (
+                    int(in_all.group(1)) / args.steps)
             name = run_name(args.label, result["h"], args.steps, result["mu"])
             with open(os.path.join(RUNS, name + ".csv"), "w",
                       newline="") as f:

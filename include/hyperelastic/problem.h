@@ -283,6 +283,13 @@ namespace hyperelastic
     NewtonSolver                                newton;
 
     std::vector<StepSummary<dim>> step_summaries;
+    /// What the run cost so far, from the stepper's report of the last
+    /// converged step (LoadStep): Newton iterations in all (failed attempts
+    /// included), per nominal step, and the smallest increment over the
+    /// nominal one (0: no step yet, or arc length).
+    unsigned int newton_in_all           = 0;
+    double       newton_per_nominal_step = 0.;
+    double       smallest_step_fraction  = 0.;
   };
 
   /// Reads the dimension from the parameters and runs the scene.

@@ -1,5 +1,10 @@
 // The contact terms' shared defaults for d_hat, kappa and eps.
+#include <deal.II/base/mpi.h>
+
 #include <hyperelastic/contact/barrier_settings.h>
+#include <hyperelastic/contact/barrier_stiffness.h>
+
+#include <cmath>
 
 #include <sstream>
 
@@ -11,11 +16,33 @@ namespace hyperelastic
     return 1e-3 * diagonal;
   }
 
+  double
+  mean_element_size(const std::vector<double> &areas,
+                    const int                  dim,
+                    const bool                 distributed,
+                    const MPI_Comm             comm)
+  {
+    double sum = 0., count = 0.;
+    for (const double a : areas)
+      if (a > 0.)
+        {
+          sum += dim == 2 ? a : std::sqrt(a);
+          count += 1.;
+        }
+    if (distributed)
+      {
+        sum   = dealii::Utilities::MPI::sum(sum, comm);
+        count = dealii::Utilities::MPI::sum(count, comm);
+      }
+    return count > 0. ? sum / count : 0.;
+  }
+
   BarrierSettings
   barrier_settings(const ContactParameters &parameters,
                    const double             diagonal,
                    const LameParameters    &moduli,
                    const bool               dynamic,
+                   const double             element_size,
                    const double             reference_gap)
   {
     BarrierSettings s;
@@ -34,13 +61,36 @@ namespace hyperelastic
             s.origin = BarrierSettings::Origin::reference_gap;
           }
       }
+    s.kappa_0      = (moduli.lambda + 2. * moduli.mu) / s.d_hat;
+    s.element_size = element_size;
+    s.adaptive_kappa = !(parameters.barrier_stiffness > 0.) && !dynamic &&
+                       parameters.operating_point;
+    if (s.adaptive_kappa && element_size > 0.)
+      s.operating_factor =
+        s.d_hat / (BarrierStiffness::force_factor(BarrierStiffness::target) *
+                   element_size);
     s.kappa = parameters.barrier_stiffness > 0.
                 ? parameters.barrier_stiffness
-                : (moduli.lambda + 2. * moduli.mu) / s.d_hat;
+                : s.kappa_0 * s.operating_factor;
     s.eps   = parameters.friction_smoothing > 0.
                 ? parameters.friction_smoothing
                 : (dynamic ? s.d_hat : 0.1 * s.d_hat);
     return s;
+  }
+
+  std::string
+  barrier_stiffness_text(const BarrierSettings &settings, const double kappa)
+  {
+    std::ostringstream s;
+    if (settings.operating_factor != 1. && settings.kappa == kappa)
+      s << settings.kappa_0 << " x " << settings.operating_factor << " = "
+        << kappa << " (automatic: (lambda + 2 mu) / d_hat times d_hat / ("
+        << BarrierStiffness::force_factor(BarrierStiffness::target)
+        << " h), h = " << settings.element_size
+        << " the boundary's mean element size; re-targeted between steps)";
+    else
+      s << kappa;
+    return s.str();
   }
 
   std::string

@@ -42,7 +42,8 @@ namespace hyperelastic
           out << "contact: " << n_obstacles << " obstacle(s), barrier distance "
               << barrier_distance_text(obstacles->settings())
               << ", barrier stiffness kappa = "
-              << obstacles->barrier_stiffness()
+              << barrier_stiffness_text(obstacles->settings(),
+                                        obstacles->barrier_stiffness())
               << (obstacles->has_friction()
                     ? (dynamic ? ", friction smoothing eps_v = "
                                : ", friction smoothing eps = ") +
@@ -66,7 +67,9 @@ namespace hyperelastic
             out << " (connectivity on every rank; positions exchanged with "
                    "the ranks within reach), barrier distance "
                 << barrier_distance_text(self->settings())
-                << ", barrier stiffness kappa = " << self->barrier_stiffness()
+                << ", barrier stiffness kappa = "
+                << barrier_stiffness_text(self->settings(),
+                                          self->barrier_stiffness())
                 << std::endl;
           }
       }
@@ -129,6 +132,27 @@ namespace hyperelastic
       void
       print_cost(std::ostream &out) const override
       {
+        // The barrier's operating point (BarrierStiffness): kappa at the
+        // start and at the end, and the smallest distance over d_hat of
+        // the converged states the steps started from.
+        const auto operating_point = [&](const char             *what,
+                                         const BarrierStiffness &k) {
+          out << "\n" << what << ": barrier stiffness kappa = " << k.value();
+          if (k.adaptive())
+            out << " (automatic, re-targeted " << k.n_retargets()
+                << " times between steps)";
+          if (k.largest_ratio() > 0.)
+            out << "; smallest distance over d_hat at the steps' starts "
+                << k.smallest_ratio() << " to " << k.largest_ratio();
+          out << std::endl;
+        };
+        if (obstacles)
+          operating_point("obstacle contact", obstacles->stiffness_control());
+        if (corners)
+          operating_point("meshed obstacles' corners",
+                          corners->stiffness_control());
+        if (self)
+          operating_point("self contact", self->stiffness_control());
         if (!self)
           return;
         const auto &c = self->cost();

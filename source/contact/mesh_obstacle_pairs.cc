@@ -61,6 +61,7 @@ namespace hyperelastic
       , my_subdomain(dof_handler.get_triangulation().locally_owned_subdomain())
       , d_hat(settings.d_hat)
       , kappa(settings.kappa)
+      , stiffness(settings.kappa, settings.adaptive_kappa)
   {
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     ghost_buffer.reinit(dof_handler.locally_owned_dofs(), relevant, comm);
@@ -704,6 +705,11 @@ namespace hyperelastic
   {
     clock.begin_step(t_start);
     start_positions = body_at(u);
+    // kappa at a sound operating point for the step to come, from the
+    // converged state's smallest distance (BarrierStiffness).
+    if (stiffness.adaptive() &&
+        stiffness.retarget(measure(u, t_start).min_distance / d_hat))
+      kappa = stiffness.value();
   }
 
   template <int dim>

@@ -110,12 +110,18 @@ namespace hyperelastic
       }
 
     const double diagonal = std::sqrt(gather_vertices(dof_handler));
+    std::vector<double> areas;
+    for (const Vertex &v : vertices)
+      areas.push_back(v.area);
+    const double element_size = mean_element_size(areas, dim, true, comm);
     shared_settings =
       shared ? *shared
-             : barrier_settings(parameters, diagonal, moduli, dynamic);
+             : barrier_settings(
+                 parameters, diagonal, moduli, dynamic, element_size);
     d_hat_value = shared_settings.d_hat;
     kappa       = shared_settings.kappa;
     eps_setting = shared_settings.eps;
+    stiffness   = BarrierStiffness(kappa, shared_settings.adaptive_kappa);
 
     check_start();
   }
@@ -792,6 +798,11 @@ namespace hyperelastic
   {
     clock.begin_step(t_start);
     lagging.begin_step();
+    // kappa at a sound operating point for the step to come, from the
+    // converged state's smallest distance (BarrierStiffness).
+    if (stiffness.adaptive() &&
+        stiffness.retarget(measure(u, t_start).min_distance / d_hat_value))
+      kappa = stiffness.value();
     start_positions.resize(vertices.size());
     for (unsigned int a = 0; a < vertices.size(); ++a)
       start_positions[a] = position(a, u);

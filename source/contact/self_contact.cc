@@ -80,11 +80,19 @@ namespace hyperelastic
       closest_pair(parameters.barrier_distance > 0.
                      ? parameters.barrier_distance
                      : 2. * diagonal_barrier_distance(diagonal));
-    shared_settings =
-      barrier_settings(parameters, diagonal, moduli, dynamic, closest.distance);
+    std::vector<double> areas;
+    for (const Vertex &v : vertices)
+      areas.push_back(v.area);
+    shared_settings = barrier_settings(parameters,
+                                       diagonal,
+                                       moduli,
+                                       dynamic,
+                                       mean_element_size(areas, dim, false, comm),
+                                       closest.distance);
     d_hat       = shared_settings.d_hat;
     kappa       = shared_settings.kappa;
     eps_setting = shared_settings.eps;
+    stiffness   = BarrierStiffness(kappa, shared_settings.adaptive_kappa);
 
     check_start(closest);
   }
@@ -522,6 +530,11 @@ namespace hyperelastic
     end_state  = EndStateMap();
     step_start = t_start;
     lagging.begin_step();
+    // kappa at a sound operating point for the step to come, from the
+    // converged state's smallest distance (BarrierStiffness).
+    if (stiffness.adaptive() &&
+        stiffness.retarget(measure(u).min_distance / d_hat))
+      kappa = stiffness.value();
     owned_start.resize(n_owned);
     for (unsigned int k = 0; k < n_owned; ++k)
       {

@@ -53,6 +53,9 @@ namespace hyperelastic
       }
     else
       system.store_converged_state();
+    step.nominal            = nominal;
+    step.start              = t;
+    step.smallest_increment = std::numeric_limits<double>::infinity();
     while (t < end)
       {
         const double t_next = next_load_factor();
@@ -192,11 +195,20 @@ namespace hyperelastic
     t                = t_next;
     system.store_converged_state();
 
+    step.newton_in_all += result.iterations();
+    step.smallest_increment = std::min(step.smallest_increment, increment);
+    // A full-size step tells what a step of this scene costs (one without
+    // cut-backs: not a snap step either, whose budget is larger).
+    if (increment >= nominal && step.cut_backs == 0)
+      {
+        full_size_costs.push_back(result.iterations());
+        if (full_size_costs.size() > full_size_memory)
+          full_size_costs.erase(full_size_costs.begin());
+      }
     // Grow back towards the nominal increment after two easy steps in a
     // row (one alone often follows a cut-back by luck).
-    easy_steps_in_a_row = result.iterations() <= parameters.easy_step_iterations
-                            ? easy_steps_in_a_row + 1
-                            : 0;
+    easy_steps_in_a_row =
+      result.iterations() <= easy_threshold() ? easy_steps_in_a_row + 1 : 0;
     if (easy_steps_in_a_row >= 2 && increment < nominal)
       {
         increment           = std::min(2. * increment, nominal);
@@ -208,11 +220,21 @@ namespace hyperelastic
     step.cut_backs = 0;
   }
 
+  unsigned int
+  LoadControlLoop::easy_threshold() const
+  {
+    unsigned int threshold = parameters.easy_step_iterations;
+    for (const unsigned int cost : full_size_costs)
+      threshold = std::max(threshold, cost);
+    return threshold;
+  }
+
   void
   LoadControlLoop::recover(const ConvergenceFailure &failure,
                            const double              t_next,
                            const double              attempted)
   {
+    step.newton_in_all += failure.newton_iterations();
     system.restore_converged_state();
     easy_steps_in_a_row = 0;
     double smaller      = 0.5 * attempted;

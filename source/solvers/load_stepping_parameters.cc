@@ -53,8 +53,17 @@ namespace hyperelastic
                       "elements at equilibrium' rejects), return to the last "
                       "converged state and retry with half the load "
                       "increment; after two easy steps in a row double it "
-                      "again, up to 1 / 'Loading/Number of load steps'. "
-                      "false: stop at the first failure.");
+                      "again, up to 1 / 'Loading/Number of load steps' "
+                      "(never past it). A step is easy when it took no more "
+                      "Newton iterations than the scene's own full-size "
+                      "steps: the most that one of the last three steps at "
+                      "the nominal increment took without a cut-back, and "
+                      "at least 'Easy step iterations' (a sliding contact "
+                      "whose every step takes 10 iterations grows back; a "
+                      "fixed bound of 6 kept it at 1/16). The log's progress "
+                      "line and the run's closing line give the Newton "
+                      "iterations per nominal step (failed attempts "
+                      "included). false: stop at the first failure.");
     prm.declare_entry("Minimum increment",
                       "1e-4",
                       Double(0, 1),
@@ -101,7 +110,9 @@ namespace hyperelastic
                       "6",
                       Integer(1),
                       "A load step converged in at most this many Newton "
-                      "iterations counts as easy.");
+                      "iterations counts as easy, and so does one that took "
+                      "no more than the scene's recent full-size steps "
+                      "('Adaptive').");
     prm.declare_entry(
       "Predictor",
       "none",

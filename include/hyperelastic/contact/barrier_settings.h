@@ -7,8 +7,11 @@
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/materials/material.h>
 
+#include <mpi.h>
+
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace hyperelastic
 {
@@ -29,9 +32,18 @@ namespace hyperelastic
     /// The smallest reference gap the automatic d_hat saw (+infinity if
     /// none within twice the diagonal's rule, or without self contact).
     double reference_gap = std::numeric_limits<double>::infinity();
-    /// kappa: 'Barrier stiffness', or the P-wave modulus lambda + 2 mu over
-    /// d_hat (a barrier as stiff as the material over its reach).
+    /// kappa: 'Barrier stiffness', or automatic: quasi-statically
+    /// kappa_0 (lambda + 2 mu) / d_hat, the P-wave modulus over d_hat, times
+    /// operating_factor = d_hat / (g(1/2) h), h the boundary's mean element
+    /// size: the pressure (lambda + 2 mu) d_hat / h that compresses a
+    /// boundary element by d_hat then holds a pair at d = d_hat / 2, the
+    /// middle of the barrier's range (BarrierStiffness); in dynamics kappa_0
+    /// itself.
     double kappa = 0.;
+    double kappa_0 = 0., operating_factor = 1., element_size = 0.;
+    /// Whether kappa is re-targeted between steps (BarrierStiffness): the
+    /// automatic kappa of a quasi-static scene.
+    bool adaptive_kappa = false;
     /// Friction's smoothing: 'Friction smoothing', or a slip length per
     /// step of 0.1 d_hat (quasi-static) or a slip velocity of d_hat per unit
     /// time (dynamics).
@@ -44,7 +56,8 @@ namespace hyperelastic
   diagonal_barrier_distance(double diagonal);
 
   /// The settings for a body whose bounding box has the diagonal
-  /// @p diagonal, of a material with the small-strain @p moduli; with
+  /// @p diagonal and whose boundary's mean element size is
+  /// @p element_size, of a material with the small-strain @p moduli; with
   /// 'Barrier distance = 0' and a finite, positive @p reference_gap (the
   /// smallest distance between non-adjacent boundary features in the
   /// reference configuration, measured by self contact up to twice
@@ -55,7 +68,24 @@ namespace hyperelastic
     double                   diagonal,
     const LameParameters    &moduli,
     bool                     dynamic,
+    double                   element_size  = 0.,
     double reference_gap = std::numeric_limits<double>::infinity());
+
+  /// The mean element size of a boundary whose vertices have the shares
+  /// @p areas of its measure (2D: lengths, h = the share; 3D: areas, h =
+  /// sqrt of the share, exact for a regular mesh of right triangles), over
+  /// all ranks of @p comm if @p distributed (each rank holds its own
+  /// vertices). Collective if @p distributed.
+  double
+  mean_element_size(const std::vector<double> &areas,
+                    int                        dim,
+                    bool                       distributed,
+                    MPI_Comm                   comm);
+
+  /// The barrier stiffness @p kappa for the run header, with the automatic
+  /// one's factors.
+  std::string
+  barrier_stiffness_text(const BarrierSettings &settings, double kappa);
 
   /// "d_hat = <value> (<where it comes from>)" for the run header.
   std::string

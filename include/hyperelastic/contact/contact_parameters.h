@@ -53,6 +53,10 @@ namespace hyperelastic
     double barrier_distance = 0.;
     /// kappa; 0: automatic ((lambda + 2 mu) / d_hat).
     double barrier_stiffness = 0.;
+    /// 'Barrier stiffness rule': the automatic kappa at the barrier's
+    /// operating point (start from the element size, re-targeted between
+    /// steps: BarrierStiffness) rather than (lambda + 2 mu) / d_hat fixed.
+    bool operating_point = false;
     /// eps (quasi-static, a slip length) or eps_v (dynamics, a slip
     /// velocity); 0: automatic.
     double       friction_smoothing       = 0.;

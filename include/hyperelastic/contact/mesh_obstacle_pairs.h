@@ -46,6 +46,7 @@
 #include <hyperelastic/assembly/term_capabilities.h>
 #include <hyperelastic/base/timed_section.h>
 #include <hyperelastic/contact/barrier_settings.h>
+#include <hyperelastic/contact/barrier_stiffness.h>
 #include <hyperelastic/contact/contact_measures.h>
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/contact/obstacle_clock.h>
@@ -158,6 +159,13 @@ namespace hyperelastic
     /// entries). Collective.
     void
     contact_forces(const VectorType &u, double t, VectorType &forces) const;
+
+    /// kappa's start and its re-targets between steps (BarrierStiffness).
+    const BarrierStiffness &
+    stiffness_control() const
+    {
+      return stiffness;
+    }
 
     /// The sharp obstacle vertices and edges (all meshed obstacles).
     std::array<unsigned int, 2>
@@ -302,6 +310,8 @@ namespace hyperelastic
     dealii::IndexSet   relevant;
     unsigned int       my_subdomain = 0;
     double             d_hat = 0., kappa = 0.;
+    /// kappa's start and its re-targets between steps.
+    BarrierStiffness stiffness;
 
     /// The meshed obstacles: their section number k and motion, and where
     /// their Point is at t = 0 (Point moved by the motion at t = 0: the

@@ -53,6 +53,7 @@
 #include <hyperelastic/assembly/term_capabilities.h>
 #include <hyperelastic/base/timed_section.h>
 #include <hyperelastic/contact/barrier_settings.h>
+#include <hyperelastic/contact/barrier_stiffness.h>
 #include <hyperelastic/contact/contact_measures.h>
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/contact/friction_lagging.h>
@@ -209,6 +210,13 @@ namespace hyperelastic
     barrier_stiffness() const
     {
       return kappa;
+    }
+
+    /// kappa's start and its re-targets between steps (BarrierStiffness).
+    const BarrierStiffness &
+    stiffness_control() const
+    {
+      return stiffness;
     }
 
     /// eps of the friction of a step of length @p h (dynamics: eps_v h).
@@ -378,6 +386,8 @@ namespace hyperelastic
     BarrierSettings                                          shared_settings;
     double                                                   d_hat_value = 0.;
     double                                                   kappa       = 0.;
+    /// kappa's start and its re-targets between steps.
+    BarrierStiffness stiffness;
     /// eps (quasi-static) or eps_v (dynamics).
     double eps_setting = 0.;
     /// Friction's lagging updates ('Friction lagging updates' a step).

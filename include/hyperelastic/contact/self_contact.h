@@ -55,6 +55,7 @@
 #include <hyperelastic/assembly/term_capabilities.h>
 #include <hyperelastic/base/timed_section.h>
 #include <hyperelastic/contact/barrier_settings.h>
+#include <hyperelastic/contact/barrier_stiffness.h>
 #include <hyperelastic/contact/contact_measures.h>
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/contact/duplicate_counting.h>
@@ -178,6 +179,13 @@ namespace hyperelastic
     barrier_stiffness() const
     {
       return kappa;
+    }
+
+    /// kappa's start and its re-targets between steps (BarrierStiffness).
+    const BarrierStiffness &
+    stiffness_control() const
+    {
+      return stiffness;
     }
 
     /// d_hat, kappa, eps and where d_hat comes from (the obstacles take
@@ -401,6 +409,8 @@ namespace hyperelastic
 
     BarrierSettings shared_settings;
     double          d_hat = 0., kappa = 0.;
+    /// kappa's start and its re-targets between steps.
+    BarrierStiffness stiffness;
     /// The step's end-state map (set_end_state_map).
     EndStateMap end_state;
     /// The owned boundary vertices' positions at the step's start (the

@@ -1,7 +1,9 @@
 // The load-control loop of LoadStepper, as the algorithm reads: take a step
 // from the last converged state; on failure, ask the recovery strategies in
 // order for the next attempt:
-//   1. cut back: halve the increment (down to 'Minimum increment');
+//   1. cut back: halve the increment (down to 'Minimum increment'); it
+//      doubles again after two steps in a row that cost no more than the
+//      scene's own full-size steps (easy_threshold());
 //   2. snap step: where a cut-back would go below 1/16 of the nominal
 //      increment under displacement control, once from each converged
 //      state, the nominal increment with the larger budget 'Snap
@@ -21,6 +23,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace hyperelastic
 {
@@ -80,6 +83,16 @@ namespace hyperelastic
     void
     accept(const NewtonResult &result, double t_next, double attempted);
 
+    /// The most Newton iterations a step may take and still count as easy
+    /// (two easy steps in a row double a cut-back increment): the scene's
+    /// own cost of a full-size step, the most that one of the last
+    /// full_size_memory converged steps at the nominal increment took (snap
+    /// steps aside), and at least 'Easy step iterations'. A sliding contact
+    /// whose every step takes 10 iterations grows back after a cut-back;
+    /// with the fixed 6 alone it stayed at 1/16 (issue 67).
+    unsigned int
+    easy_threshold() const;
+
     /// After a failed attempt to @p t_next: the next attempt from the
     /// strategies (a snap step, or a cut-back), or a ConvergenceFailure.
     void
@@ -133,6 +146,10 @@ namespace hyperelastic
     LoadStep     step;
     unsigned int easy_steps_in_a_row = 0;
     Attempt      next                = Attempt::step;
+    /// The Newton iterations of the last converged full-size steps (snap
+    /// steps aside), the newest last; at most full_size_memory of them.
+    static constexpr unsigned int full_size_memory = 3;
+    std::vector<unsigned int>     full_size_costs;
     /// The converged state a snap step was last tried from (once each),
     /// and the increment the cut-backs resume with if it fails.
     double snapped_from = -1.;

@@ -73,6 +73,26 @@ namespace hyperelastic
     /// The stepper's state after this step (a checkpoint resumes from it).
     double       next_increment = 0.;
     unsigned int easy_steps     = 0; ///< easy steps in a row
+    /// Newton iterations of the run so far (from its start or restart),
+    /// failed attempts included: what the run cost.
+    unsigned int newton_in_all = 0;
+    /// The nominal increment and the load factor (or time) the run started
+    /// from: newton_in_all / ((load_factor - start) / nominal) is the cost
+    /// per nominal step (newton_per_nominal_step()).
+    double nominal = 0.;
+    double start   = 0.;
+    /// The smallest increment of a converged step so far.
+    double smallest_increment = 0.;
+
+    /// Newton iterations per nominal step so far (failed attempts
+    /// included); 0 before any step.
+    double
+    newton_per_nominal_step() const
+    {
+      const double nominal_steps =
+        nominal > 0. ? (load_factor - start) / nominal : 0.;
+      return nominal_steps > 0. ? newton_in_all / nominal_steps : 0.;
+    }
   };
 
   /// Where a resumed run starts (a restart from a checkpoint): the system
