@@ -40,15 +40,7 @@ namespace
     const bool        three = dim == 3;
     const std::string gap   = number(0.5 * d_hat);
     const std::string top   = three ? "0; 0; -" : "0; -";
-    return subsection("Problem", entry("Dimension", std::to_string(dim))) +
-           subsection("Mesh",
-                      entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                        entry("Upper corner", three ? "1, 1, 1" : "1, 1") +
-                        entry("Subdivisions", three ? "2, 2, 2" : "4, 4")) +
-           subsection("Material",
-                      entry("Model", "neo-Hookean") +
-                        entry("Young's modulus", "1") +
-                        entry("Poisson's ratio", "0.3")) +
+    return unit_block(dim) +
            subsection("Loading", entry("Number of load steps", "10")) +
            dirichlet(1,
                      three ? 5 : 3,

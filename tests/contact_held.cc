@@ -60,15 +60,7 @@ namespace
     const std::string gap = number(0.5 * d_hat), top = number(1. + 0.5 * d_hat);
     const std::string down = three ? "0, 0, " : "0, ";
     const std::string friction = entry("Friction coefficient", number(mu));
-    return subsection("Problem", entry("Dimension", std::to_string(dim))) +
-           subsection("Mesh",
-                      entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
-                        entry("Upper corner", three ? "1, 1, 1" : "1, 1") +
-                        entry("Subdivisions", three ? "2, 2, 2" : "4, 4")) +
-           subsection("Material",
-                      entry("Model", "neo-Hookean") +
-                        entry("Young's modulus", "1") +
-                        entry("Poisson's ratio", "0.3")) +
+    return unit_block(dim) +
            subsection("Loading", entry("Number of load steps", "5")) +
            subsection("Output",
                       entry("Write VTU", "false") + entry("Verbose", "false")) +

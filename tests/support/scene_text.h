@@ -61,6 +61,23 @@ namespace hyperelastic::testing
     return p;
   }
 
+  /// Problem, Mesh and Material sections of the unit block [0, 1]^dim of
+  /// neo-Hookean (E = 1, nu = 0.3) in 4 x 4 (2D) or 2 x 2 x 2 (3D) boxes.
+  inline std::string
+  unit_block(const int dim)
+  {
+    const bool three = dim == 3;
+    return subsection("Problem", entry("Dimension", std::to_string(dim))) +
+           subsection("Mesh",
+                      entry("Lower corner", three ? "0, 0, 0" : "0, 0") +
+                        entry("Upper corner", three ? "1, 1, 1" : "1, 1") +
+                        entry("Subdivisions", three ? "2, 2, 2" : "4, 4")) +
+           subsection("Material",
+                      entry("Model", "neo-Hookean") +
+                        entry("Young's modulus", "1") +
+                        entry("Poisson's ratio", "0.3"));
+  }
+
   inline std::string
   dirichlet(const int          slot,
             const int          id,
