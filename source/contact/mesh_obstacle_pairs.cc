@@ -25,16 +25,6 @@ namespace hyperelastic
   {
     /// Each pair keeps a tenth of its distance along a Newton direction.
     constexpr double keep_fraction = 0.1;
-
-    template <int dim>
-    double
-    element_measure(const Point<dim> &a, const Point<dim> &b, const Point<dim> *c)
-    {
-      if constexpr (dim == 3)
-        return 0.5 * cross_product_3d(b - a, *c - a).norm();
-      (void)c;
-      return a.distance(b);
-    }
   } // namespace
 
   template <int dim>
@@ -77,199 +67,6 @@ namespace hyperelastic
 
   template <int dim>
   MeshObstaclePairs<dim>::~MeshObstaclePairs() = default;
-
-  template <int dim>
-  void
-  MeshObstaclePairs<dim>::find_features(
-    const ContactParameters                                        &parameters,
-    const std::vector<std::shared_ptr<const ObstacleSurface<dim>>> &surfaces)
-  {
-    AssertDimension(surfaces.size(), parameters.obstacles.size());
-    for (unsigned int k = 0; k < parameters.obstacles.size(); ++k)
-      {
-        const ObstacleParameters &o = parameters.obstacles[k];
-        if (o.type != ObstacleType::mesh)
-          continue;
-        Assert(surfaces[k] != nullptr, ExcInternalError());
-        const ObstacleSurface<dim> &surface = *surfaces[k];
-        const unsigned int m = numbers.size();
-        numbers.push_back(o.number);
-        sections.push_back(o.subsection);
-        // The points where they are at t = 0: the file's coordinates
-        // shifted by Point and by the motion at t = 0.
-        Tensor<1, dim> shift;
-        motions[m]->set_time(0.);
-        for (unsigned int d = 0; d < dim; ++d)
-          shift[d] = o.point[d] + motions[m]->value(Point<dim>(), d);
-        anchors.push_back(Point<dim>() + shift);
-        const unsigned int first = obstacle_points.size();
-        for (const Point<dim> &p : surface.points())
-          {
-            obstacle_points.push_back(p + shift);
-            point_obstacle.push_back(m);
-          }
-        const auto &elements = surface.element_vertices();
-        const auto  Y        = [&](const unsigned int i) -> const Point<dim> & {
-          return obstacle_points[first + i];
-        };
-        // Every vertex's share of the area; in 3D the edges with their
-        // triangles' opposite vertices and their share of the area.
-        std::vector<double>                               area(surface.points().size());
-        std::map<std::array<unsigned int, 2>, std::vector<unsigned int>> opposite;
-        std::map<std::array<unsigned int, 2>, double>     edge_area;
-        std::vector<std::vector<unsigned int>>            neighbours(area.size());
-        for (const auto &e : elements)
-          {
-            const double measure =
-              element_measure<dim>(Y(e[0]), Y(e[1]), dim == 3 ? &Y(e[dim - 1]) : nullptr);
-            for (const unsigned int v : e)
-              area[v] += measure / dim;
-            if constexpr (dim == 2)
-              {
-                neighbours[e[0]].push_back(e[1]);
-                neighbours[e[1]].push_back(e[0]);
-              }
-            else
-              for (unsigned int k = 0; k < 3; ++k)
-                {
-                  const std::array<unsigned int, 2> edge = {
-                    {std::min(e[k], e[(k + 1) % 3]), std::max(e[k], e[(k + 1) % 3])}};
-                  opposite[edge].push_back(e[(k + 2) % 3]);
-                  edge_area[edge] += measure / 3.;
-                }
-          }
-        // Sharp: an obstacle vertex whose two segments (2D) are not one
-        // straight line, an edge whose two triangles (3D) are not one flat
-        // piece (boundary and non-manifold edges are sharp), and the
-        // vertices of sharp edges.
-        std::vector<bool> sharp(area.size(), false);
-        if constexpr (dim == 2)
-          for (unsigned int v = 0; v < area.size(); ++v)
-            {
-              if (neighbours[v].empty())
-                continue;
-              sharp[v] = true;
-              if (neighbours[v].size() == 2)
-                {
-                  const Tensor<1, 2> a = Y(neighbours[v][0]) - Y(v),
-                                     b = Y(neighbours[v][1]) - Y(v);
-                  const double cross = a[0] * b[1] - a[1] * b[0];
-                  sharp[v] = !(std::abs(cross) <= 1e-10 * a.norm() * b.norm() &&
-                               a * b < 0.);
-                }
-            }
-        else
-          for (const auto &[edge, others] : opposite)
-            {
-              bool flat = false;
-              if (others.size() == 2)
-                {
-                  const Point<3>    &a = Y(edge[0]), &b = Y(edge[1]);
-                  const Tensor<1, 3> n1 = cross_product_3d(b - a, Y(others[0]) - a),
-                                     n2 = cross_product_3d(b - a, Y(others[1]) - a);
-                  // One plane, the opposite vertices on either side.
-                  flat = cross_product_3d(n1, n2).norm() <=
-                           1e-10 * n1.norm() * n2.norm() &&
-                         n1 * n2 < 0.;
-                }
-              if (flat)
-                continue;
-              Feature ridge;
-              ridge.v        = {{first + edge[0], first + edge[1]}};
-              ridge.obstacle = m;
-              ridge.area     = edge_area[edge];
-              ridge.length2  = Y(edge[0]).distance_square(Y(edge[1]));
-              ridges.push_back(ridge);
-              sharp[edge[0]] = sharp[edge[1]] = true;
-            }
-        for (unsigned int v = 0; v < area.size(); ++v)
-          if (sharp[v])
-            {
-              Feature corner;
-              corner.v        = {{first + v, first + v}};
-              corner.obstacle = m;
-              corner.area     = area[v];
-              corners.push_back(corner);
-            }
-      }
-  }
-
-  template <int dim>
-  void
-  MeshObstaclePairs<dim>::gather_body(const DoFHandler<dim> &dof_handler)
-  {
-    // The boundary faces of the owned and ghost cells (the faces where the
-    // ghost layer ends are not the body's boundary) that this rank counts
-    // (an owned cell's) or that have an owned vertex.
-    const IndexSet &owned = dof_handler.locally_owned_dofs();
-    std::map<types::global_dof_index, unsigned int> index;
-    // 3D: each edge's faces' areas and the lowest subdomain among them.
-    std::map<std::array<unsigned int, 2>, std::pair<double, unsigned int>>
-      edge_data;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        if (cell->is_artificial())
-          continue;
-        for (const unsigned int f : cell->face_indices())
-          {
-            const auto face = cell->face(f);
-            if (!face->at_boundary() ||
-                face->boundary_id() == partition_edge_boundary_id)
-              continue;
-            bool any_owned = false;
-            for (unsigned int v = 0; v < face->n_vertices(); ++v)
-              any_owned = any_owned || owned.is_element(face->vertex_dof_index(v, 0));
-            BodyPrimitive<dim> primitive;
-            primitive.counted = cell->is_locally_owned();
-            for (unsigned int v = 0; v < face->n_vertices(); ++v)
-              {
-                const types::global_dof_index first = face->vertex_dof_index(v, 0);
-                auto it = index.find(first);
-                if (it == index.end())
-                  {
-                    BodyVertex vertex;
-                    vertex.X = face->vertex(v);
-                    for (unsigned int d = 0; d < dim; ++d)
-                      vertex.dofs[d] = face->vertex_dof_index(v, d);
-                    vertex.owned = owned.is_element(first);
-                    it = index.emplace(first, vertices.size()).first;
-                    vertices.push_back(vertex);
-                  }
-                primitive.v[v] = it->second;
-              }
-            const auto &p = primitive.v;
-            primitive.area =
-              element_measure<dim>(vertices[p[0]].X,
-                                   vertices[p[1]].X,
-                                   dim == 3 ? &vertices[p[dim - 1]].X : nullptr);
-            if constexpr (dim == 3)
-              for (unsigned int k = 0; k < 3; ++k)
-                {
-                  const std::array<unsigned int, 2> e = {
-                    {std::min(p[k], p[(k + 1) % 3]), std::max(p[k], p[(k + 1) % 3])}};
-                  auto it = edge_data.emplace(
-                    e, std::make_pair(0., dealii::numbers::invalid_unsigned_int)).first;
-                  it->second.first += primitive.area / 3.;
-                  it->second.second =
-                    std::min(it->second.second,
-                             static_cast<unsigned int>(cell->subdomain_id()));
-                }
-            if (primitive.counted || any_owned)
-              faces.push_back(primitive);
-          }
-      }
-    if constexpr (dim == 3)
-      for (const auto &[e, data] : edge_data)
-        {
-          BodyPrimitive<2> edge;
-          edge.v       = e;
-          edge.counted = data.second == my_subdomain;
-          edge.area    = data.first;
-          edge.length2 = vertices[e[0]].X.distance_square(vertices[e[1]].X);
-          if (edge.counted || vertices[e[0]].owned || vertices[e[1]].owned)
-            edges.push_back(edge);
-        }
-  }
 
   template <int dim>
   typename MeshObstaclePairs<dim>::Placement
@@ -381,8 +178,8 @@ namespace hyperelastic
                                      const std::vector<Point<dim>>     &y,
                                      const std::vector<Tensor<1, dim>> *p,
                                      const std::vector<Tensor<1, dim>> *q,
-                                     const double margin,
-                                     const bool   counted_only) const
+                                     const double                       margin,
+                                     const bool counted_only) const
   {
     const auto box_of = [](const auto                        &indices,
                            const std::vector<Point<dim>>     &z,
@@ -406,7 +203,9 @@ namespace hyperelastic
         return primitive.counted;
       return std::any_of(primitive.v.begin(),
                          primitive.v.end(),
-                         [&](const unsigned int v) { return vertices[v].owned; }) ||
+                         [&](const unsigned int v) {
+                           return vertices[v].owned;
+                         }) ||
              primitive.counted;
     };
     using Entry = std::pair<BoundingBox<dim>, unsigned int>;
@@ -453,17 +252,16 @@ namespace hyperelastic
                                           const double       t,
                                           const unsigned int order,
                                           const F           &f,
-                                          double *min_distance) const
+                                          double            *min_distance) const
   {
     const std::vector<Point<dim>> x = body_at(u);
     const std::vector<Point<dim>> y = obstacle_at(clock.obstacle_time(t));
-    bool                          touching = false;
-    double                        closest  = d_hat;
+    PairScan                      scan(d_hat);
     for (const Pair &pair : candidates(x, y, nullptr, nullptr, d_hat, false))
       {
-        const Coordinates  c = coordinates(pair, x, y);
-        const DistanceCase k = classify_pair<dim>(c, pair.edge_edge);
-        double weight = 0., mollifier = 0.;
+        const Coordinates  c      = coordinates(pair, x, y);
+        const DistanceCase k      = classify_pair<dim>(c, pair.edge_edge);
+        double             weight = 0., mollifier = 0.;
         if (!pair.edge_edge)
           weight = corners[pair.feature].area;
         else
@@ -474,26 +272,14 @@ namespace hyperelastic
           }
         PairBarrier<n_coordinates> b =
           pair_barrier<dim>(c, k, d_hat, kappa * weight, mollifier, order);
-        closest = std::min(closest, b.distance);
-        if (!(b.distance > 0.))
-          {
-            touching = true;
-            continue;
-          }
-        if (b.distance >= d_hat)
+        if (!scan.active(b.distance))
           continue;
-        b.energy *= clock.end_state.energy_factor();
-        for (double &g : b.gradient)
-          g *= clock.end_state.gradient_factor();
-        if (order == 2)
-          for (auto &row : b.hessian)
-            for (double &v : row)
-              v *= clock.end_state.hessian_factor();
+        to_solved_state(b, clock.end_state, order);
         f(pair, b);
       }
     if (min_distance)
-      *min_distance = closest;
-    return touching;
+      *min_distance = scan.closest;
+    return scan.touching;
   }
 
   template <int dim>
@@ -514,13 +300,12 @@ namespace hyperelastic
           squared_distance<dim>(classify_pair<dim>(c, pair.edge_edge), c), 0.));
         if (d > 0.)
           continue;
-        const unsigned int m =
-          pair.edge_edge ? ridges[pair.feature].obstacle :
-                           corners[pair.feature].obstacle;
+        const unsigned int m = pair.edge_edge ? ridges[pair.feature].obstacle
+                                              : corners[pair.feature].obstacle;
         std::ostringstream s;
         s << "the obstacle of '" << sections[m] << "' starts on the body's "
-          << "boundary: its " << (pair.edge_edge ? "edge" : "vertex")
-          << " at (" << y[obstacle_points_of(pair)[pair.edge_edge ? 2 : 0]]
+          << "boundary: its " << (pair.edge_edge ? "edge" : "vertex") << " at ("
+          << y[obstacle_points_of(pair)[pair.edge_edge ? 2 : 0]]
           << ") touches a boundary " << (pair.edge_edge ? "edge" : "face")
           << " of the body at t = 0";
         problem = s.str();
@@ -530,132 +315,57 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
-  MeshObstaclePairs<dim>::contact_forces(const VectorType &u,
-                                         const double      t,
-                                         VectorType       &forces) const
+  typename MeshObstaclePairs<dim>::Stencil
+  MeshObstaclePairs<dim>::stencil(const Pair                      &pair,
+                                  const AffineConstraints<double> *constraints,
+                                  const std::vector<Tensor<1, dim>> *rest) const
   {
-    std::vector<types::global_dof_index> rows;
-    std::vector<double>                  values;
-    const bool                           touching =
-      for_each_active(u, t, 1, [&](const Pair &pair, const auto &b) {
-        const auto body = body_points(pair);
-        for (unsigned int i = 0; i < n_points; ++i)
-          if (body[i] >= 0 && vertices[body[i]].owned)
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                rows.push_back(vertices[body[i]].dofs[d]);
-                values.push_back(-b.gradient[i * dim + d]);
-              }
-      });
-    // On every rank: the first add after an insert is collective.
-    forces.add(rows, values);
-    if (Utilities::MPI::max(touching ? 1 : 0, comm) != 0)
-      throw ConvergenceFailure(
-        "a corner or edge of a meshed obstacle touches the body's boundary "
-        "at t = " +
-        std::to_string(t));
+    const auto body = body_points(pair), obstacle = obstacle_points_of(pair);
+    Stencil    s;
+    for (unsigned int i = 0; i < n_points; ++i)
+      if (body[i] >= 0)
+        s.set_vertex(i,
+                     vertices[body[i]].dofs,
+                     vertices[body[i]].owned,
+                     constraints);
+      else
+        s.set_obstacle_point(i, rest ? (*rest)[obstacle[i]] : Tensor<1, dim>());
+    return s;
   }
 
   template <int dim>
-  ForceSize
-  MeshObstaclePairs<dim>::add_forces(const VectorType &u,
-                                     const double      t,
-                                     VectorType       &forces) const
+  std::string
+  MeshObstaclePairs<dim>::touching_message(const double t)
   {
-    const auto scope = timed_section(timer, "contact");
-    contact_forces(u, t, forces);
-    return {};
+    return "a corner or edge of a meshed obstacle touches the body's "
+           "boundary at t = " +
+           std::to_string(t);
   }
 
   template <int dim>
-  void
-  MeshObstaclePairs<dim>::add_stiffness(
-    const VectorType                &u,
-    const double                     t,
-    const TangentProjection          projection,
-    const AffineConstraints<double> &constraints,
-    MatrixType                      &matrix,
-    VectorType                      &rhs) const
+  bool
+  MeshObstaclePairs<dim>::visit(const VectorType             &u,
+                                const double                  t,
+                                const typename Sums::Request &request) const
   {
-    const auto scope = timed_section(timer, "contact");
     // The rest of the obstacles' way within the step, per obstacle point:
     // the linearization carries it as a prescribed motion of the pairs'
     // obstacle points (end-state coordinates, hence / c).
     std::vector<Tensor<1, dim>> rest(obstacle_points.size());
-    if (clock.on_the_way(t))
+    if (request.order == 2 && clock.on_the_way(t))
       {
         const std::vector<Point<dim>> now = obstacle_at(clock.reached),
                                       end = obstacle_at(clock.end_time(t));
         for (unsigned int i = 0; i < rest.size(); ++i)
           rest[i] = (end[i] - now[i]) / clock.end_state.c;
       }
-    const bool project = projection == TangentProjection::every_point;
-    std::vector<types::global_dof_index> rhs_rows, columns;
-    std::vector<double>                  rhs_values, values;
-    rhs.add(rhs_rows, rhs_values); // the switch to adding, on every rank
-    for_each_active(u, t, 2, [&](const Pair &pair, const auto &b) {
-      const auto body = body_points(pair), obstacle = obstacle_points_of(pair);
-      // The body's block, projected to positive semi-definite where asked
-      // (the obstacle's coordinates are no unknowns).
-      SmallMatrix<n_coordinates> K = b.hessian;
-      for (unsigned int i = 0; i < n_points; ++i)
-        for (unsigned int j = 0; j < n_points; ++j)
-          if (body[i] < 0 || body[j] < 0)
-            for (unsigned int r = 0; r < dim; ++r)
-              for (unsigned int c = 0; c < dim; ++c)
-                K[i * dim + r][j * dim + c] = 0.;
-      if (project)
-        K = positive_semidefinite_part<n_coordinates>(K);
-      for (unsigned int i = 0; i < n_points; ++i)
-        {
-          if (body[i] < 0 || !vertices[body[i]].owned)
-            continue;
-          for (unsigned int r = 0; r < dim; ++r)
-            {
-              const types::global_dof_index row = vertices[body[i]].dofs[r];
-              if (constraints.is_constrained(row))
-                continue;
-              columns.clear();
-              values.clear();
-              double moved = 0.;
-              for (unsigned int j = 0; j < n_points; ++j)
-                for (unsigned int c = 0; c < dim; ++c)
-                  if (body[j] >= 0)
-                    {
-                      columns.push_back(vertices[body[j]].dofs[c]);
-                      values.push_back(K[i * dim + r][j * dim + c]);
-                    }
-                  else
-                    moved += b.hessian[i * dim + r][j * dim + c] *
-                             rest[obstacle[j]][c];
-              moved += condense_row(constraints, columns, values);
-              matrix.add(row, columns.size(), columns.data(), values.data());
-              if (moved != 0.)
-                {
-                  rhs_rows.push_back(row);
-                  rhs_values.push_back(-moved);
-                }
-            }
-        }
-    });
-    rhs.add(rhs_rows, rhs_values);
-  }
-
-  template <int dim>
-  double
-  MeshObstaclePairs<dim>::energy(const VectorType &u, const double t) const
-  {
-    const auto scope    = timed_section(timer, "contact");
-    double     sum      = 0.;
-    const bool touching = for_each_active(u, t, 0, [&](const Pair &pair,
-                                                       const auto &b) {
-      if (counted(pair))
-        sum += b.energy;
-    });
-    if (touching)
-      sum = std::numeric_limits<double>::infinity();
-    return Utilities::MPI::sum(sum, comm);
+    return for_each_active(
+      u, t, request.order, [&](const Pair &pair, const auto &b) {
+        request.take(stencil(pair, request.constraints, &rest),
+                     b,
+                     counted(pair),
+                     true);
+      });
   }
 
   template <int dim>
@@ -684,17 +394,17 @@ namespace hyperelastic
     double alpha = 1.;
     for (const Pair &pair : candidates(x, y, &p, &q, d_hat, true))
       {
-        const Coordinates c = coordinates(pair, x, y);
-        const auto body = body_points(pair), obstacle = obstacle_points_of(pair);
+        const Coordinates c    = coordinates(pair, x, y);
+        const auto        body = body_points(pair),
+                   obstacle    = obstacle_points_of(pair);
         Coordinates motion;
         for (unsigned int i = 0; i < n_points; ++i)
           for (unsigned int d = 0; d < dim; ++d)
             motion[i * dim + d] =
               body[i] >= 0 ? p[body[i]][d] : q[obstacle[i]][d];
-        alpha = std::min(alpha,
-                         additive_ccd<dim>(
-                           c, motion, pair.edge_edge, keep_fraction, alpha)
-                           .t);
+        alpha = std::min(
+          alpha,
+          additive_ccd<dim>(c, motion, pair.edge_edge, keep_fraction, alpha).t);
       }
     return Utilities::MPI::min(alpha, comm);
   }
@@ -710,27 +420,6 @@ namespace hyperelastic
     if (stiffness.adaptive() &&
         stiffness.retarget(measure(u, t_start).min_distance / d_hat))
       kappa = stiffness.value();
-  }
-
-  template <int dim>
-  bool
-  MeshObstaclePairs<dim>::prepare_motion(const double t)
-  {
-    const double t_end = clock.end_time(t);
-    if (!(clock.reached < t_end))
-      return false;
-    for (unsigned int m = 0; m < motions.size(); ++m)
-      if (placement(m, clock.reached).shift != placement(m, t_end).shift)
-        return true;
-    clock.reached = t_end;
-    return false;
-  }
-
-  template <int dim>
-  void
-  MeshObstaclePairs<dim>::advance(const double alpha, const double t)
-  {
-    clock.advance(alpha, t);
   }
 
   template <int dim>
@@ -755,9 +444,9 @@ namespace hyperelastic
       1,
       [&](const Pair &pair, const auto &b) {
         active += counted(pair) ? 1 : 0;
-        const unsigned int m = pair.edge_edge ? ridges[pair.feature].obstacle :
-                                                corners[pair.feature].obstacle;
-        const auto body = body_points(pair);
+        const unsigned int m    = pair.edge_edge ? ridges[pair.feature].obstacle
+                                                 : corners[pair.feature].obstacle;
+        const auto         body = body_points(pair);
         for (unsigned int i = 0; i < n_points; ++i)
           if (body[i] >= 0 && vertices[body[i]].owned)
             {
@@ -770,12 +459,8 @@ namespace hyperelastic
       },
       &closest);
     ContactMeasures measures;
-    for (unsigned int k = 0; k < numbers.size(); ++k)
-      measures.add_obstacle<dim>(numbers[k],
-                                 Utilities::MPI::sum(force[k], comm),
-                                 Utilities::MPI::sum(moment[k], comm));
-    measures.min_distance = Utilities::MPI::min(closest, comm);
-    measures.active_pairs = Utilities::MPI::sum(active, comm);
+    measures.add_obstacles<dim>(numbers, force, moment, comm);
+    measures.set_pairs(closest, active, comm);
     return measures;
   }
 

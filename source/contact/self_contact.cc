@@ -8,6 +8,7 @@
 #include <hyperelastic/contact/barrier.h>
 #include <hyperelastic/contact/barrier_settings.h>
 #include <hyperelastic/contact/collision_detection.h>
+#include <hyperelastic/contact/pair_assembly.h>
 #include <hyperelastic/contact/self_contact.h>
 #include <hyperelastic/mesh/mesh_distribution.h>
 
@@ -30,25 +31,6 @@ namespace hyperelastic
     /// The tangent's sparsity holds the couplings of the pairs within this
     /// many d_hat, so that a few iterates more fit in before it grows.
     constexpr double coupling_reach = 4.;
-
-    /// The potential w V(x_end) / c of a pair in the step's solved state
-    /// (the end-state map @p map; SteppedTerm::set_end_state_map) from the
-    /// pair's barrier @p b at x_end: energy w / c, gradient w, Hessian
-    /// (@p order 2) w c times those.
-    template <std::size_t n>
-    void
-    to_solved_state(PairBarrier<n>    &b,
-                    const EndStateMap &map,
-                    const unsigned int order)
-    {
-      b.energy *= map.energy_factor();
-      for (double &g : b.gradient)
-        g *= map.gradient_factor();
-      if (order == 2)
-        for (auto &row : b.hessian)
-          for (double &v : row)
-            v *= map.hessian_factor();
-    }
 
   } // namespace
 
@@ -83,139 +65,19 @@ namespace hyperelastic
     std::vector<double> areas;
     for (const Vertex &v : vertices)
       areas.push_back(v.area);
-    shared_settings = barrier_settings(parameters,
-                                       diagonal,
-                                       moduli,
-                                       dynamic,
-                                       mean_element_size(areas, dim, false, comm),
-                                       closest.distance);
+    shared_settings =
+      barrier_settings(parameters,
+                       diagonal,
+                       moduli,
+                       dynamic,
+                       mean_element_size(areas, dim, false, comm),
+                       closest.distance);
     d_hat       = shared_settings.d_hat;
     kappa       = shared_settings.kappa;
     eps_setting = shared_settings.eps;
     stiffness   = BarrierStiffness(kappa, shared_settings.adaptive_kappa);
 
     check_start(closest);
-  }
-
-  template <int dim>
-  std::vector<types::global_dof_index>
-  SelfContact<dim>::gather_vertices(const DoFHandler<dim> &dof_handler)
-  {
-    // The owned boundary vertices (ghost cells too: an owned vertex may lie
-    // only on a neighbour's boundary face) and the boundary faces of the
-    // owned cells, as first dofs; the faces where the ghost layer ends are
-    // not the body's boundary.
-    const IndexSet &owned = dof_handler.locally_owned_dofs();
-    std::map<types::global_dof_index, std::vector<double>> mine;
-    std::vector<types::global_dof_index>                   my_faces;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        if (cell->is_artificial())
-          continue;
-        for (const unsigned int f : cell->face_indices())
-          {
-            const auto face = cell->face(f);
-            if (!face->at_boundary() ||
-                face->boundary_id() == partition_edge_boundary_id)
-              continue;
-            for (unsigned int v = 0; v < face->n_vertices(); ++v)
-              {
-                const types::global_dof_index first =
-                  face->vertex_dof_index(v, 0);
-                if (cell->is_locally_owned())
-                  my_faces.push_back(first);
-                if (!owned.is_element(first) || mine.count(first))
-                  continue;
-                std::vector<double> &data = mine[first];
-                for (unsigned int d = 0; d < dim; ++d)
-                  data.push_back(face->vertex(v)[d]);
-                for (unsigned int d = 0; d < dim; ++d)
-                  data.push_back(face->vertex_dof_index(v, d));
-              }
-          }
-      }
-    std::vector<double> packed;
-    for (const auto &[first, data] : mine)
-      packed.insert(packed.end(), data.begin(), data.end());
-    const std::vector<std::vector<double>> all_vertices =
-      Utilities::MPI::all_gather(comm, packed);
-    for (unsigned int r = 0; r < all_vertices.size(); ++r)
-      {
-        if (r == rank)
-          first_owned = vertices.size();
-        for (std::size_t i = 0; i < all_vertices[r].size(); i += 2 * dim)
-          {
-            Vertex v;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                v.X[d]    = all_vertices[r][i + d];
-                v.dofs[d] = static_cast<types::global_dof_index>(
-                  all_vertices[r][i + dim + d]);
-              }
-            v.owner = r;
-            vertices.push_back(v);
-          }
-        if (r == rank)
-          n_owned = vertices.size() - first_owned;
-      }
-    return my_faces;
-  }
-
-  template <int dim>
-  void
-  SelfContact<dim>::build_faces(
-    const std::vector<types::global_dof_index> &my_faces)
-  {
-    // The faces, and their measures shared by their vertices (edges: a
-    // third of each adjacent triangle).
-    const std::vector<std::vector<types::global_dof_index>> all_faces =
-      Utilities::MPI::all_gather(comm, my_faces);
-    std::map<types::global_dof_index, unsigned int> index;
-    for (unsigned int k = 0; k < vertices.size(); ++k)
-      index.emplace(vertices[k].dofs[0], k);
-    std::map<std::array<unsigned int, 2>, unsigned int> edge_index;
-    for (const auto &list : all_faces)
-      for (std::size_t i = 0; i < list.size(); i += dim)
-        {
-          std::array<unsigned int, dim> face;
-          for (unsigned int d = 0; d < dim; ++d)
-            face[d] = index.at(list[i + d]);
-          double measure = vertices[face[0]].X.distance(vertices[face[1]].X);
-          if constexpr (dim == 3)
-            measure =
-              0.5 * cross_product_3d(vertices[face[1]].X - vertices[face[0]].X,
-                                     vertices[face[2]].X - vertices[face[0]].X)
-                      .norm();
-          for (const unsigned int v : face)
-            vertices[v].area += measure / dim;
-          for (unsigned int k = 0; k < dim; ++k)
-            longest_edge = std::max(longest_edge,
-                                    vertices[face[k]].X.distance(
-                                      vertices[face[(k + 1) % dim]].X));
-          faces.push_back(face);
-          if constexpr (dim == 3)
-            for (unsigned int k = 0; k < 3; ++k)
-              {
-                std::array<unsigned int, 2> e = {
-                  {std::min(face[k], face[(k + 1) % 3]),
-                   std::max(face[k], face[(k + 1) % 3])}};
-                auto it = edge_index.find(e);
-                if (it == edge_index.end())
-                  {
-                    it = edge_index.emplace(e, edges.size()).first;
-                    edges.push_back(e);
-                    edge_area.push_back(0.);
-                    edge_length2.push_back(
-                      vertices[e[0]].X.distance_square(vertices[e[1]].X));
-                  }
-                edge_area[it->second] += measure / 3.;
-              }
-        }
-    std::vector<std::array<double, dim>> points(vertices.size());
-    for (unsigned int k = 0; k < vertices.size(); ++k)
-      for (unsigned int d = 0; d < dim; ++d)
-        points[k][d] = vertices[k].X[d];
-    incidence = BoundaryIncidence<dim>(faces, points);
   }
 
   template <int dim>
@@ -255,12 +117,10 @@ namespace hyperelastic
           << (dim == 2          ? "vertex and segment"
               : worst.edge_edge ? "edges"
                                 : "vertex and triangle")
-          << " near (" << vertices[worst.v[0]].X << ") are "
-          << global_closest
+          << " near (" << vertices[worst.v[0]].X << ") are " << global_closest
           << " apart in the reference configuration, closer than the "
              "barrier distance d_hat = "
-          << d_hat
-          << " (they would repel each other before any load): ";
+          << d_hat << " (they would repel each other before any load): ";
         if (global_closest > 0.)
           s << "set 'Contact/Barrier distance' below " << global_closest
             << " or refine the mesh there";
@@ -307,8 +167,7 @@ namespace hyperelastic
       }
     const std::vector<Pair> &pairs = near_pairs;
     Stopwatch                watch(spent.narrow);
-    bool                     touching = false;
-    double                   closest  = d_hat;
+    PairScan                 scan(d_hat);
     for (const Pair &pair : pairs)
       {
         const Coordinates c = coordinates(pair, x);
@@ -316,11 +175,9 @@ namespace hyperelastic
           {
             // A pair kept for the feasible step only (two edges not both
             // sharp: contact/duplicate_counting.h).
-            const double d = std::sqrt(std::max(
+            scan.active(std::sqrt(std::max(
               squared_distance<dim>(classify_pair<dim>(c, pair.edge_edge), c),
-              0.));
-            closest        = std::min(closest, d);
-            touching       = touching || !(d > 0.);
+              0.)));
             continue;
           }
         PairBarrier<n_coordinates> b =
@@ -330,170 +187,71 @@ namespace hyperelastic
                             kappa * pair.weight,
                             pair.mollifier,
                             order);
-        closest = std::min(closest, b.distance);
-        if (!(b.distance > 0.))
-          {
-            touching = true;
-            continue;
-          }
-        if (b.distance >= d_hat)
+        if (!scan.active(b.distance))
           continue;
         to_solved_state(b, end_state, order);
         f(pair, b);
       }
     if (min_distance)
-      *min_distance = closest;
-    return touching;
+      *min_distance = scan.closest;
+    return scan.touching;
   }
 
   template <int dim>
-  void
-  SelfContact<dim>::add_pair_forces(const VectorType &u,
-                                    const double      t,
-                                    VectorType       &forces) const
+  typename SelfContact<dim>::Stencil
+  SelfContact<dim>::stencil(const Pair                &pair,
+                            const std::vector<double> *prescribed) const
   {
-    std::vector<types::global_dof_index> rows;
-    std::vector<double>                  values;
-    const auto add = [&](const Pair &pair, const auto &b) {
-      for (unsigned int i = 0; i < n_points; ++i)
-        if (vertices[pair.v[i]].owner == rank)
+    Stencil s;
+    for (unsigned int i = 0; i < n_points; ++i)
+      {
+        const Vertex &v = vertices[pair.v[i]];
+        s.set_vertex(i, v.dofs, v.owner == rank);
+        if (prescribed)
+          for (unsigned int d = 0; d < dim; ++d)
+            s.held[i * dim + d] = (*prescribed)[pair.v[i] * dim + d];
+      }
+    return s;
+  }
+
+  template <int dim>
+  bool
+  SelfContact<dim>::visit(const VectorType             &u,
+                          const double                  t,
+                          const typename Sums::Request &request) const
+  {
+    const State s = near_state(u);
+    // With constraints, the prescribed value of every boundary dof near here
+    // (NaN where free), from its owner: a pair's far vertices may be
+    // constrained on another rank.
+    std::vector<double> prescribed;
+    if (request.constraints)
+      {
+        std::vector<double> owned(std::size_t(n_owned) * dim);
+        for (unsigned int k = 0; k < n_owned; ++k)
           for (unsigned int d = 0; d < dim; ++d)
             {
-              rows.push_back(vertices[pair.v[i]].dofs[d]);
-              values.push_back(-b.gradient[i * dim + d]);
+              const types::global_dof_index dof =
+                vertices[first_owned + k].dofs[d];
+              owned[k * dim + d] =
+                request.constraints->is_constrained(dof)
+                  ? request.constraints->get_inhomogeneity(dof)
+                  : std::numeric_limits<double>::quiet_NaN();
             }
-    };
-    const State s        = near_state(u);
-    const bool  touching = for_each_active(s.x, 1, add);
-    for_each_friction(s, t, 1, add);
-    // On every rank, even without contact: the first add after an insert
-    // makes Trilinos assemble the vector, a collective operation.
-    forces.add(rows, values);
-    if (Utilities::MPI::max(touching ? 1 : 0, comm) != 0)
-      throw ConvergenceFailure(
-        "two parts of the boundary touch (self contact)");
-  }
-
-  template <int dim>
-  ForceSize
-  SelfContact<dim>::add_forces(const VectorType &u,
-                               const double      t,
-                               VectorType       &forces) const
-  {
-    const auto scope = timed_section(timer, "contact");
-    add_pair_forces(u, t, forces);
-    return {};
-  }
-
-  template <int dim>
-  void
-  SelfContact<dim>::contact_forces(const VectorType &u,
-                                   const double      t,
-                                   VectorType       &forces) const
-  {
-    add_pair_forces(u, t, forces);
-  }
-
-  template <int dim>
-  void
-  SelfContact<dim>::add_stiffness(const VectorType                &u,
-                                  const double                     t,
-                                  const TangentProjection          projection,
-                                  const AffineConstraints<double> &constraints,
-                                  MatrixType                      &matrix,
-                                  VectorType &rhs) const
-  {
-    const auto scope = timed_section(timer, "contact");
-    // Each pair's Hessian exact, or projected to positive semi-definite
-    // for Newton's projected tangent.
-    const bool project_pairs = projection == TangentProjection::every_point;
-    // The prescribed value of every boundary dof near here (NaN where
-    // free), from its owner: a pair's far vertices may be constrained on
-    // another rank.
-    const State         s = near_state(u);
-    std::vector<double> owned(std::size_t(n_owned) * dim);
-    for (unsigned int k = 0; k < n_owned; ++k)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const types::global_dof_index dof = vertices[first_owned + k].dofs[d];
-          owned[k * dim + d]                = constraints.is_constrained(dof)
-                                                ? constraints.get_inhomogeneity(dof)
-                                                : std::numeric_limits<double>::quiet_NaN();
-        }
-    const std::vector<double> prescribed = exchange(s.send, owned, dim);
-    std::vector<types::global_dof_index> rhs_rows;
-    std::vector<double>                  rhs_values;
-    std::vector<types::global_dof_index> columns;
-    std::vector<double>                  values;
-    stiff_rows.clear();
-    const auto add = [&](const Pair &pair, const auto &b, const bool project) {
-      const SmallMatrix<n_coordinates> K =
-        project ? positive_semidefinite_part<n_coordinates>(b.hessian)
-                : b.hessian;
-      for (unsigned int i = 0; i < n_points; ++i)
-        {
-          const Vertex &row_vertex = vertices[pair.v[i]];
-          if (row_vertex.owner != rank)
-            continue;
-          for (unsigned int r = 0; r < dim; ++r)
-            {
-              if (!std::isnan(prescribed[pair.v[i] * dim + r]))
-                continue; // a constrained row reads d du_r = d g_r
-              stiff_rows.push_back(row_vertex.dofs[r]);
-              columns.clear();
-              values.clear();
-              double moved = 0.;
-              for (unsigned int j = 0; j < n_points; ++j)
-                for (unsigned int c = 0; c < dim; ++c)
-                  {
-                    const double k = K[i * dim + r][j * dim + c];
-                    const double g = prescribed[pair.v[j] * dim + c];
-                    if (std::isnan(g))
-                      {
-                        columns.push_back(vertices[pair.v[j]].dofs[c]);
-                        values.push_back(k);
-                      }
-                    else
-                      moved += k * g;
-                  }
-              matrix.add(row_vertex.dofs[r],
-                         columns.size(),
-                         columns.data(),
-                         values.data());
-              if (moved != 0.)
-                {
-                  rhs_rows.push_back(row_vertex.dofs[r]);
-                  rhs_values.push_back(-moved);
-                }
-            }
-        }
-    };
-    for_each_active(s.x, 2, [&](const Pair &pair, const auto &b) {
-      add(pair, b, project_pairs);
-    });
+        prescribed = exchange(s.send, owned, dim);
+      }
+    const std::vector<double> *held =
+      request.constraints ? &prescribed : nullptr;
+    const bool touching =
+      for_each_active(s.x, request.order, [&](const Pair &pair, const auto &b) {
+        request.take(stencil(pair, held), b, counted_here(pair), true);
+      });
     // Friction's pair Hessians are positive semi-definite already.
-    for_each_friction(s, t, 2, [&](const Pair &pair, const auto &b) {
-      add(pair, b, false);
-    });
-    rhs.add(rhs_rows, rhs_values);
-  }
-
-  template <int dim>
-  double
-  SelfContact<dim>::energy(const VectorType &u, const double t) const
-  {
-    const auto scope = timed_section(timer, "contact");
-    double     sum   = 0.;
-    const auto add   = [&](const Pair &pair, const auto &b) {
-      if (counted_here(pair))
-        sum += b.energy;
-    };
-    const State s        = near_state(u);
-    const bool  touching = for_each_active(s.x, 0, add);
-    for_each_friction(s, t, 0, add);
-    if (touching)
-      sum = std::numeric_limits<double>::infinity();
-    return Utilities::MPI::sum(sum, comm);
+    for_each_friction(
+      s, t, request.order, [&](const Pair &pair, const auto &b) {
+        request.take(stencil(pair, held), b, counted_here(pair), false);
+      });
+    return touching;
   }
 
   template <int dim>
@@ -716,14 +474,6 @@ namespace hyperelastic
   }
 
   template <int dim>
-  void
-  SelfContact<dim>::add_stiff_dofs(IndexSet &dofs) const
-  {
-    for (const types::global_dof_index dof : stiff_rows)
-      dofs.add_index(dof);
-  }
-
-  template <int dim>
   ContactMeasures
   SelfContact<dim>::measure(const VectorType &u) const
   {
@@ -737,8 +487,7 @@ namespace hyperelastic
       },
       &closest);
     ContactMeasures m;
-    m.min_distance = Utilities::MPI::min(closest, comm);
-    m.active_pairs = Utilities::MPI::sum(active, comm);
+    m.set_pairs(closest, active, comm);
     return m;
   }
 

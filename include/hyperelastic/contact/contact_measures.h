@@ -2,6 +2,8 @@
 // (the contact layer, contact/contact_layer.h, writes the columns).
 #pragma once
 
+#include <deal.II/base/mpi.h>
+
 #include <hyperelastic/output/step_summary.h>
 
 #include <limits>
@@ -28,6 +30,30 @@ namespace hyperelastic
     double min_distance = std::numeric_limits<double>::infinity();
     /// The number of pairs closer than d_hat.
     double active_pairs = 0.;
+
+    /// The pairs' measures over all ranks from this rank's smallest
+    /// distance @p closest and its @p active pairs. Collective.
+    void
+    set_pairs(const double closest, const unsigned int active, MPI_Comm comm)
+    {
+      min_distance = dealii::Utilities::MPI::min(closest, comm);
+      active_pairs = dealii::Utilities::MPI::sum(active, comm);
+    }
+
+    /// Appends the force and moment columns of the obstacles @p numbers
+    /// from this rank's parts of their forces and moments. Collective.
+    template <int dim>
+    void
+    add_obstacles(const std::vector<unsigned int>           &numbers,
+                  const std::vector<dealii::Tensor<1, dim>> &force,
+                  const std::vector<dealii::Tensor<1, 3>>   &moment,
+                  MPI_Comm                                   comm)
+    {
+      for (unsigned int k = 0; k < numbers.size(); ++k)
+        add_obstacle<dim>(numbers[k],
+                          dealii::Utilities::MPI::sum(force[k], comm),
+                          dealii::Utilities::MPI::sum(moment[k], comm));
+    }
 
     /// Appends obstacle @p number's force and moment columns.
     template <int dim>

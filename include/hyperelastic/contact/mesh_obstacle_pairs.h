@@ -51,6 +51,7 @@
 #include <hyperelastic/contact/contact_parameters.h>
 #include <hyperelastic/contact/obstacle_clock.h>
 #include <hyperelastic/contact/obstacle_surface.h>
+#include <hyperelastic/contact/pair_assembly.h>
 #include <hyperelastic/contact/primitive_distance.h>
 #include <hyperelastic/materials/material.h>
 
@@ -69,6 +70,8 @@ namespace hyperelastic
                             public SteppedTerm<dim>,
                             public MovingAdmissibleSetTerm<dim>
   {
+    friend class PairSums<dim, dim + 1>;
+
   public:
     /// Whether the scene has a meshed obstacle whose features need the
     /// pairs ('Contact/Meshed obstacle corners').
@@ -106,20 +109,29 @@ namespace hyperelastic
     /// Throws ConvergenceFailure on every rank if a pair touches.
     ForceSize
     add_forces(const VectorType &u,
-               double            t,
-               VectorType       &forces) const override;
+               const double      t,
+               VectorType       &forces) const override
+    {
+      return Sums::forces(*this, u, t, forces);
+    }
 
     void
     add_stiffness(const VectorType                        &u,
-                  double                                   t,
-                  TangentProjection                        projection,
+                  const double                             t,
+                  const TangentProjection                  projection,
                   const dealii::AffineConstraints<double> &constraints,
                   MatrixType                              &matrix,
-                  VectorType                              &rhs) const override;
+                  VectorType                              &rhs) const override
+    {
+      Sums::stiffness(*this, u, t, projection, constraints, matrix, rhs);
+    }
 
     /// kappa sum w m b; +infinity if a pair touches.
     double
-    energy(const VectorType &u, double t) const override;
+    energy(const VectorType &u, const double t) const override
+    {
+      return Sums::energy(*this, u, t);
+    }
 
     /// The largest step along @p direction, the obstacles moving jointly
     /// to their place at @p t, that keeps every pair at a tenth of its
@@ -143,9 +155,20 @@ namespace hyperelastic
       return LaggedUpdate::unchanged;
     }
     bool
-    prepare_motion(double t) override;
+    prepare_motion(const double t) override
+    {
+      return clock.prepare_motion(t, [&](const double from, const double to) {
+        for (unsigned int m = 0; m < motions.size(); ++m)
+          if (placement(m, from).shift != placement(m, to).shift)
+            return true;
+        return false;
+      });
+    }
     void
-    advance(double alpha, double t) override;
+    advance(const double alpha, const double t) override
+    {
+      clock.advance(alpha, t);
+    }
 
     /// The force of each meshed obstacle's pairs on the body (columns
     /// contact_force_<k>_<axis>, to be added to ObstacleContact's) and its
@@ -158,7 +181,10 @@ namespace hyperelastic
     /// Adds the pairs' nodal forces on the body at @p u (ghosted; owned
     /// entries). Collective.
     void
-    contact_forces(const VectorType &u, double t, VectorType &forces) const;
+    contact_forces(const VectorType &u, double t, VectorType &forces) const
+    {
+      add_forces(u, t, forces);
+    }
 
     /// kappa's start and its re-targets between steps (BarrierStiffness).
     const BarrierStiffness &
@@ -185,6 +211,8 @@ namespace hyperelastic
     static constexpr unsigned int n_points      = dim + 1;
     static constexpr std::size_t  n_coordinates = n_points * dim;
     using Coordinates = std::array<double, n_coordinates>;
+    using Stencil     = PairStencil<dim, n_points>;
+    using Sums        = PairSums<dim, n_points>;
 
     /// A body boundary vertex this rank sees.
     struct BodyVertex
@@ -282,11 +310,30 @@ namespace hyperelastic
                 const std::vector<dealii::Point<dim>> &x,
                 const std::vector<dealii::Point<dim>> &y) const;
 
+    /// The stencil of @p pair: its body vertices' dofs (constrained ones
+    /// held where @p constraints is given), written where owned, and its
+    /// obstacle points moving by @p rest (per obstacle point; none: 0).
+    Stencil
+    stencil(const Pair                                &pair,
+            const dealii::AffineConstraints<double>   *constraints = nullptr,
+            const std::vector<dealii::Tensor<1, dim>> *rest = nullptr) const;
+
+    /// Hands each pair at @p u and time @p t to the request (PairSums::Visit);
+    /// returns whether a pair touches here.
+    bool
+    visit(const VectorType             &u,
+          double                        t,
+          const typename Sums::Request &request) const;
+
+    /// What add_forces throws with when a pair touches at time @p t.
+    static std::string
+    touching_message(double t);
+
     bool
     counted(const Pair &pair) const
     {
-      return pair.edge_edge ? edges[pair.body].counted :
-                              faces[pair.body].counted;
+      return pair.edge_edge ? edges[pair.body].counted
+                            : faces[pair.body].counted;
     }
 
     /// Calls @p f(pair, barrier) for every pair with an owned body vertex
@@ -306,10 +353,10 @@ namespace hyperelastic
     const VectorType &
     ghosted(const VectorType &v) const;
 
-    const MPI_Comm     comm;
-    dealii::IndexSet   relevant;
-    unsigned int       my_subdomain = 0;
-    double             d_hat = 0., kappa = 0.;
+    const MPI_Comm   comm;
+    dealii::IndexSet relevant;
+    unsigned int     my_subdomain = 0;
+    double           d_hat = 0., kappa = 0.;
     /// kappa's start and its re-targets between steps.
     BarrierStiffness stiffness;
 
@@ -326,9 +373,9 @@ namespace hyperelastic
     std::vector<unsigned int>       point_obstacle;
     std::vector<Feature>            corners, ridges;
 
-    std::vector<BodyVertex>          vertices;
-    std::vector<BodyPrimitive<dim>>  faces;
-    std::vector<BodyPrimitive<2>>    edges;
+    std::vector<BodyVertex>         vertices;
+    std::vector<BodyPrimitive<dim>> faces;
+    std::vector<BodyPrimitive<2>>   edges;
 
     /// The step's start, where the obstacles stand within it and its
     /// end-state map (as ObstacleContact's).
@@ -336,5 +383,12 @@ namespace hyperelastic
     std::vector<dealii::Point<dim>> start_positions;
     mutable VectorType              ghost_buffer;
     dealii::TimerOutput            *timer = nullptr;
+
+    /// Its stiffness's rows are not recorded (no StiffTerm).
+    static std::vector<dealii::types::global_dof_index> *
+    written_rows()
+    {
+      return nullptr;
+    }
   };
 } // namespace hyperelastic

@@ -68,6 +68,22 @@ namespace hyperelastic
       return reached < end_time(t);
     }
 
+    /// Whether the obstacles have a way to go to the end time of @p t:
+    /// @p moves(from, to) says whether they stand elsewhere at time to
+    /// than at time from. Standing still, they are there already.
+    template <typename Moves>
+    bool
+    prepare_motion(const double t, const Moves &moves)
+    {
+      const double t_end = end_time(t);
+      if (!(reached < t_end))
+        return false;
+      if (moves(reached, t_end))
+        return true;
+      reached = t_end;
+      return false;
+    }
+
     /// The obstacles moved a fraction @p alpha of the rest of their way to
     /// the end time of @p t (all of it for alpha >= 1).
     void

@@ -59,6 +59,7 @@
 #include <hyperelastic/contact/friction_lagging.h>
 #include <hyperelastic/contact/obstacle_clock.h>
 #include <hyperelastic/contact/obstacle_surface.h>
+#include <hyperelastic/contact/pair_assembly.h>
 #include <hyperelastic/materials/material.h>
 
 #include <algorithm>
@@ -78,6 +79,8 @@ namespace hyperelastic
                           public MovingAdmissibleSetTerm<dim>,
                           public StiffTerm<dim>
   {
+    friend class PairSums<dim, 2>;
+
   public:
     /// Finds the owned boundary vertices, sets d_hat and kappa (automatic
     /// where the scene gives 0) and checks the start: a vertex on the wrong
@@ -111,23 +114,36 @@ namespace hyperelastic
     /// side of an obstacle (an obstacle moved into the body over the step).
     ForceSize
     add_forces(const VectorType &u,
-               double            t,
-               VectorType       &forces) const override;
+               const double      t,
+               VectorType       &forces) const override
+    {
+      return Sums::forces(*this, u, t, forces);
+    }
 
     void
     add_stiffness(const VectorType                        &u,
-                  double                                   t,
-                  TangentProjection                        projection,
+                  const double                             t,
+                  const TangentProjection                  projection,
                   const dealii::AffineConstraints<double> &constraints,
                   MatrixType                              &matrix,
-                  VectorType                              &rhs) const override;
+                  VectorType                              &rhs) const override
+    {
+      Sums::stiffness(*this, u, t, projection, constraints, matrix, rhs);
+    }
 
     /// kappa sum b(d); +infinity if a distance is not positive.
     double
-    energy(const VectorType &u, double t) const override;
+    energy(const VectorType &u, const double t) const override
+    {
+      return Sums::energy(*this, u, t);
+    }
 
     void
-    add_stiff_dofs(dealii::IndexSet &dofs) const override;
+    add_stiff_dofs(dealii::IndexSet &dofs) const override
+    {
+      for (const dealii::types::global_dof_index dof : stiff_rows)
+        dofs.add_index(dof);
+    }
 
     /// Along @p direction with the obstacles moving jointly from where
     /// they are to their place at @p t.
@@ -144,9 +160,21 @@ namespace hyperelastic
       clock.end_state = {c, weight};
     }
     bool
-    prepare_motion(double t) override;
+    prepare_motion(const double t) override
+    {
+      return clock.prepare_motion(t, [&](const double from, const double to) {
+        const std::vector<Placed> now = placed(from), end = placed(to);
+        for (unsigned int k = 0; k < obstacles.size(); ++k)
+          if (now[k].point != end[k].point || now[k].angle != end[k].angle)
+            return true;
+        return false;
+      });
+    }
     void
-    advance(double alpha, double t) override;
+    advance(const double alpha, const double t) override
+    {
+      clock.advance(alpha, t);
+    }
     LaggedUpdate
     update_lagged(const VectorType &u,
                   double            t,
@@ -183,7 +211,10 @@ namespace hyperelastic
     /// The nodal contact forces on the body at @p u (owned entries;
     /// barrier and friction). Collective.
     void
-    contact_forces(const VectorType &u, double t, VectorType &forces) const;
+    contact_forces(const VectorType &u, double t, VectorType &forces) const
+    {
+      add_forces(u, t, forces);
+    }
 
     double
     barrier_distance() const
@@ -241,6 +272,12 @@ namespace hyperelastic
   private:
     /// The owned, unconstrained rows the last add_stiffness() wrote.
     mutable std::vector<dealii::types::global_dof_index> stiff_rows;
+    /// Where PairSums records them.
+    std::vector<dealii::types::global_dof_index> *
+    written_rows() const
+    {
+      return &stiff_rows;
+    }
 
     /// One boundary vertex: its reference position and its dofs.
     struct Vertex
@@ -311,7 +348,7 @@ namespace hyperelastic
     /// Friction's lagged quantities of a vertex-obstacle pair.
     struct Lagged
     {
-      double                          normal_force = 0.; ///< lambda
+      double normal_force = 0.; ///< lambda
       /// d lambda / dt, extrapolated from the last two converged states
       /// (zero once updated within the step).
       double                          rate = 0.;
@@ -334,6 +371,30 @@ namespace hyperelastic
       dealii::Tensor<1, dim>          force;
       dealii::SymmetricTensor<2, dim> stiffness;
     };
+
+    /// A pair as PairSums takes it: vertex @p a (its constrained dofs held
+    /// where @p constraints is given) and the obstacle's point under it,
+    /// moving by @p motion; the pair's barrier over the two.
+    using Stencil = PairStencil<dim, 2>;
+    using Sums    = PairSums<dim, 2>;
+
+    /// Hands each pair at @p u and time @p t to the request (PairSums::Visit);
+    /// returns whether a pair touches here.
+    bool
+    visit(const VectorType             &u,
+          double                        t,
+          const typename Sums::Request &request) const;
+    Stencil
+    stencil(unsigned int                             a,
+            const dealii::AffineConstraints<double> *constraints = nullptr,
+            const dealii::Tensor<1, dim>            &motion      = {}) const;
+
+    /// What add_forces throws with when a pair touches at time @p t.
+    static std::string
+    touching_message(double t);
+
+    static PairBarrier<2 * dim>
+    as_barrier(const PairState &p);
 
     /// The slip of vertex @p a at @p x relative to obstacle @p o since the
     /// step's start, in the tangent plane of @p l.
@@ -379,13 +440,13 @@ namespace hyperelastic
     std::vector<std::shared_ptr<const ObstacleSurface<dim>>> surfaces;
     std::vector<std::unique_ptr<dealii::Function<dim>>>      motions;
     /// The rotation angles (null for obstacles that do not turn).
-    std::vector<std::unique_ptr<dealii::Function<dim>>>      angles;
-    const MPI_Comm                                           comm;
-    const bool                                               dynamic;
-    std::vector<Vertex>                                      vertices;
-    BarrierSettings                                          shared_settings;
-    double                                                   d_hat_value = 0.;
-    double                                                   kappa       = 0.;
+    std::vector<std::unique_ptr<dealii::Function<dim>>> angles;
+    const MPI_Comm                                      comm;
+    const bool                                          dynamic;
+    std::vector<Vertex>                                 vertices;
+    BarrierSettings                                     shared_settings;
+    double                                              d_hat_value = 0.;
+    double                                              kappa       = 0.;
     /// kappa's start and its re-targets between steps.
     BarrierStiffness stiffness;
     /// eps (quasi-static) or eps_v (dynamics).
@@ -399,6 +460,6 @@ namespace hyperelastic
     ObstacleClock                   clock;
     std::vector<dealii::Point<dim>> start_positions;
     std::vector<Lagged>             lagged;
-    dealii::TimerOutput *timer      = nullptr;
+    dealii::TimerOutput            *timer = nullptr;
   };
 } // namespace hyperelastic

@@ -61,6 +61,7 @@
 #include <hyperelastic/contact/duplicate_counting.h>
 #include <hyperelastic/contact/end_state_map.h>
 #include <hyperelastic/contact/friction_lagging.h>
+#include <hyperelastic/contact/pair_assembly.h>
 #include <hyperelastic/contact/pair_friction.h>
 #include <hyperelastic/contact/primitive_distance.h>
 #include <hyperelastic/materials/material.h>
@@ -82,6 +83,8 @@ namespace hyperelastic
                       public CouplingTerm<dim>,
                       public StiffTerm<dim>
   {
+    friend class PairSums<dim, dim + 1>;
+
   public:
     /// Gathers the boundary (collective), sets d_hat and kappa as the
     /// obstacles do (the automatic d_hat at most half the smallest gap
@@ -110,21 +113,30 @@ namespace hyperelastic
     /// Throws ConvergenceFailure on every rank if two primitives touch.
     ForceSize
     add_forces(const VectorType &u,
-               double            t,
-               VectorType       &forces) const override;
+               const double      t,
+               VectorType       &forces) const override
+    {
+      return Sums::forces(*this, u, t, forces);
+    }
 
     void
     add_stiffness(const VectorType                        &u,
-                  double                                   t,
-                  TangentProjection                        projection,
+                  const double                             t,
+                  const TangentProjection                  projection,
                   const dealii::AffineConstraints<double> &constraints,
                   MatrixType                              &matrix,
-                  VectorType                              &rhs) const override;
+                  VectorType                              &rhs) const override
+    {
+      Sums::stiffness(*this, u, t, projection, constraints, matrix, rhs);
+    }
 
     /// kappa sum w m b (plus friction's potential); +infinity if two
     /// primitives touch.
     double
-    energy(const VectorType &u, double t) const override;
+    energy(const VectorType &u, const double t) const override
+    {
+      return Sums::energy(*this, u, t);
+    }
 
     /// The largest step along @p direction that keeps every pair at a
     /// tenth of its distance (additive CCD).
@@ -157,7 +169,11 @@ namespace hyperelastic
     add_couplings(dealii::DynamicSparsityPattern &pattern) const override;
 
     void
-    add_stiff_dofs(dealii::IndexSet &dofs) const override;
+    add_stiff_dofs(dealii::IndexSet &dofs) const override
+    {
+      for (const dealii::types::global_dof_index dof : stiff_rows)
+        dofs.add_index(dof);
+    }
 
     /// The smallest distance of the self pairs (capped at d_hat) and the
     /// number of active ones at @p u (ghosted). Collective.
@@ -167,7 +183,10 @@ namespace hyperelastic
     /// Adds the nodal contact forces of the self pairs at @p u and time
     /// @p t (barrier and friction; owned entries). Collective.
     void
-    contact_forces(const VectorType &u, double t, VectorType &forces) const;
+    contact_forces(const VectorType &u, double t, VectorType &forces) const
+    {
+      add_forces(u, t, forces);
+    }
 
     double
     barrier_distance() const
@@ -233,6 +252,8 @@ namespace hyperelastic
     static constexpr unsigned int n_points      = dim + 1;
     static constexpr std::size_t  n_coordinates = n_points * dim;
     using Coordinates = std::array<double, n_coordinates>;
+    using Stencil     = PairStencil<dim, n_points>;
+    using Sums        = PairSums<dim, n_points>;
 
     struct Vertex
     {
@@ -361,6 +382,13 @@ namespace hyperelastic
       return vertices[lowest].owner == rank;
     }
 
+    /// What add_forces throws with when two primitives touch.
+    static std::string
+    touching_message(double)
+    {
+      return "two parts of the boundary touch (self contact)";
+    }
+
     /// A pair's lagged friction: closest-point coefficients, unit normal
     /// and normal force lambda.
     struct Lagged
@@ -386,10 +414,19 @@ namespace hyperelastic
                       unsigned int order,
                       const F     &f) const;
 
-    /// The forces g = -dV/du of the active pairs (and friction) on the
-    /// owned rows.
-    void
-    add_pair_forces(const VectorType &u, double t, VectorType &forces) const;
+    /// The stencil of @p pair: its vertices' dofs, written by their owner;
+    /// with @p prescribed (per vertex and component, NaN where free), the
+    /// constrained ones held.
+    Stencil
+    stencil(const Pair                &pair,
+            const std::vector<double> *prescribed = nullptr) const;
+
+    /// Hands each pair at @p u and time @p t to the request (PairSums::Visit);
+    /// returns whether a pair touches here.
+    bool
+    visit(const VectorType             &u,
+          double                        t,
+          const typename Sums::Request &request) const;
 
     const MPI_Comm                             comm;
     const unsigned int                         rank;
@@ -433,6 +470,12 @@ namespace hyperelastic
     mutable std::vector<Pair>               near_pairs;
     /// The owned, unconstrained rows the last add_stiffness() wrote.
     mutable std::vector<dealii::types::global_dof_index> stiff_rows;
+    /// Where PairSums records them.
+    std::vector<dealii::types::global_dof_index> *
+    written_rows() const
+    {
+      return &stiff_rows;
+    }
 
     mutable Cost         spent;
     dealii::TimerOutput *timer = nullptr;

@@ -36,6 +36,21 @@ namespace hyperelastic
   constexpr dealii::types::boundary_id partition_edge_boundary_id =
     dealii::numbers::internal_face_boundary_id - 1;
 
+  /// Calls @p f(cell, face) for every face of the body's boundary that an
+  /// owned or ghost cell of @p dof_handler has (the faces where the ghost
+  /// layer ends are not the body's boundary).
+  template <typename DoFHandlerType, typename F>
+  void
+  for_each_boundary_face(const DoFHandlerType &dof_handler, const F &f)
+  {
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int i : cell->face_indices())
+          if (cell->face(i)->at_boundary() &&
+              cell->face(i)->boundary_id() != partition_edge_boundary_id)
+            f(cell, cell->face(i));
+  }
+
   /// Gives the faces of @p tria (just made from @p description) that are on
   /// its boundary but not on the mesh's (the description lists every face
   /// on the mesh's boundary, by cell id and face number on every level)
