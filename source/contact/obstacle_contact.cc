@@ -360,18 +360,18 @@ namespace hyperelastic
 
   template <int dim>
   PairBarrier<2 * dim>
-  ObstacleContact<dim>::as_barrier(const PairState &p)
+  ObstacleContact<dim>::as_barrier(const PairState &p, const unsigned int order)
   {
     // The pair's energy depends on x - w (w the obstacle's point): the
     // obstacle's gradient and Hessian blocks are the vertex's, negated.
     PairBarrier<2 * dim> b;
     b.distance = p.distance;
     b.energy   = p.energy;
-    for (unsigned int i = 0; i < dim; ++i)
+    for (unsigned int i = 0; i < dim && order > 0; ++i)
       {
         b.gradient[i]       = -p.force[i];
         b.gradient[dim + i] = p.force[i];
-        for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int j = 0; j < dim && order > 1; ++j)
           {
             b.hessian[i][j] = b.hessian[dim + i][dim + j] = p.stiffness[i][j];
             b.hessian[i][dim + j] = b.hessian[dim + i][j] = -p.stiffness[i][j];
@@ -421,7 +421,7 @@ namespace hyperelastic
           moving ? carried(now[k], end[k], position(a, u)) / clock.end_state.c
                  : Tensor<1, dim>();
         request.take(stencil(a, request.constraints, w),
-                     as_barrier(p),
+                     as_barrier(p, request.order),
                      true,
                      false);
       });

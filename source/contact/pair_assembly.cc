@@ -6,7 +6,6 @@
 #include <hyperelastic/contact/pair_assembly.h>
 
 #include <cmath>
-#include <stdexcept>
 
 namespace hyperelastic
 {
@@ -23,15 +22,9 @@ namespace hyperelastic
     writes[i] = written;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        const types::global_dof_index dof = vertex_dofs[d];
-        dofs[i * dim + d]                 = dof;
-        if (constraints == nullptr || !constraints->is_constrained(dof))
-          continue;
-        const auto *entries = constraints->get_constraint_entries(dof);
-        if (entries != nullptr && !entries->empty())
-          throw std::logic_error(
-            "contact pairs: only Dirichlet constraints are supported");
-        held[i * dim + d] = constraints->get_inhomogeneity(dof);
+        dofs[i * dim + d] = vertex_dofs[d];
+        if (constraints)
+          held[i * dim + d] = prescribed_value(*constraints, vertex_dofs[d]);
       }
   }
 
@@ -99,9 +92,9 @@ namespace hyperelastic
   template <int dim, unsigned int n_points>
   void
   PairSums<dim, n_points>::sum_forces(const Visit       &visit,
-                                  VectorType        &forces,
-                                  const MPI_Comm     comm,
-                                  const std::string &touching)
+                                      VectorType        &forces,
+                                      const MPI_Comm     comm,
+                                      const std::string &touching)
   {
     std::vector<types::global_dof_index> rows;
     std::vector<double>                  values;

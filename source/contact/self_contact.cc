@@ -233,10 +233,7 @@ namespace hyperelastic
             {
               const types::global_dof_index dof =
                 vertices[first_owned + k].dofs[d];
-              owned[k * dim + d] =
-                request.constraints->is_constrained(dof)
-                  ? request.constraints->get_inhomogeneity(dof)
-                  : std::numeric_limits<double>::quiet_NaN();
+              owned[k * dim + d] = prescribed_value(*request.constraints, dof);
             }
         prescribed = exchange(s.send, owned, dim);
       }

@@ -11,6 +11,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -18,6 +19,20 @@ namespace hyperelastic
 {
   using VectorType = dealii::TrilinosWrappers::MPI::Vector;
   using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
+
+  /// The value Dirichlet @p constraints prescribe for @p dof, NaN where it
+  /// is free. Throws for a constraint with entries.
+  inline double
+  prescribed_value(const dealii::AffineConstraints<double> &constraints,
+                   const dealii::types::global_dof_index    dof)
+  {
+    if (!constraints.is_constrained(dof))
+      return std::numeric_limits<double>::quiet_NaN();
+    const auto *entries = constraints.get_constraint_entries(dof);
+    if (entries != nullptr && !entries->empty())
+      throw std::logic_error("only Dirichlet constraints are supported");
+    return constraints.get_inhomogeneity(dof);
+  }
 
   /// Condenses one matrix row with Dirichlet @p constraints: removes from
   /// @p columns and @p values the constrained columns and returns the sum of
@@ -38,11 +53,7 @@ namespace hyperelastic
             values[kept++] = values[j];
             continue;
           }
-        const auto *entries = constraints.get_constraint_entries(columns[j]);
-        if (entries != nullptr && !entries->empty())
-          throw std::logic_error(
-            "condense_row: only Dirichlet constraints are supported");
-        moved += values[j] * constraints.get_inhomogeneity(columns[j]);
+        moved += values[j] * prescribed_value(constraints, columns[j]);
       }
     columns.resize(kept);
     values.resize(kept);

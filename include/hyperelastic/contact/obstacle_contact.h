@@ -372,9 +372,6 @@ namespace hyperelastic
       dealii::SymmetricTensor<2, dim> stiffness;
     };
 
-    /// A pair as PairSums takes it: vertex @p a (its constrained dofs held
-    /// where @p constraints is given) and the obstacle's point under it,
-    /// moving by @p motion; the pair's barrier over the two.
     using Stencil = PairStencil<dim, 2>;
     using Sums    = PairSums<dim, 2>;
 
@@ -384,6 +381,9 @@ namespace hyperelastic
     visit(const VectorType             &u,
           double                        t,
           const typename Sums::Request &request) const;
+    /// A pair as PairSums takes it: vertex @p a (its constrained dofs held
+    /// where @p constraints is given) and the obstacle's point under it,
+    /// moving by @p motion.
     Stencil
     stencil(unsigned int                             a,
             const dealii::AffineConstraints<double> *constraints = nullptr,
@@ -393,8 +393,10 @@ namespace hyperelastic
     static std::string
     touching_message(double t);
 
+    /// The pair's barrier over the vertex and the obstacle's point, its
+    /// derivatives up to @p order.
     static PairBarrier<2 * dim>
-    as_barrier(const PairState &p);
+    as_barrier(const PairState &p, unsigned int order);
 
     /// The slip of vertex @p a at @p x relative to obstacle @p o since the
     /// step's start, in the tangent plane of @p l.

@@ -222,12 +222,11 @@ namespace hyperelastic
     /// columns to @p rhs; the rows written in @p written if not null.
     /// Collective (the right-hand side's add).
     static void
-    sum_stiffness(
-      const Visit                                  &visit,
-      const dealii::AffineConstraints<double>      &constraints,
-      bool                                          project,
-      MatrixType                                   &matrix,
-      VectorType                                   &rhs,
-      std::vector<dealii::types::global_dof_index> *written = nullptr);
+    sum_stiffness(const Visit                                  &visit,
+                  const dealii::AffineConstraints<double>      &constraints,
+                  bool                                          project,
+                  MatrixType                                   &matrix,
+                  VectorType                                   &rhs,
+                  std::vector<dealii::types::global_dof_index> *written);
   };
 } // namespace hyperelastic
