@@ -87,6 +87,24 @@ namespace hyperelastic
       "once no normal force changes by more than 1e-3 of the largest. 0: "
       "the last step's values only.");
     prm.declare_entry(
+      "Friction lag trigger",
+      "single pair",
+      Selection("single pair|friction force"),
+      "What calls for a lagging update. 'single pair': any pair's normal "
+      "force changed by more than 1e-3 of the largest (in a slide pairs "
+      "enter and leave with normal forces near 0 every step, and it fires "
+      "on every step). 'friction force': the friction force the new normal "
+      "forces change, mu (lambda_new - lambda) f1(|s|) along each pair's "
+      "slip assembled over the contact, by more than 1e-3 of the contact's "
+      "normal forces (l2 norms), and large updates where the normal forces "
+      "change by more than half their norm (issue 67: shallow ironing with "
+      "'Barrier stiffness rule = operating point' and 2 updates a step, "
+      "8.09 -> 7.82 Newton iterations per nominal step, no step cut back). "
+      "Not yet the default: the answers then carry friction's lag error up "
+      "to that tolerance, which moves the stored example scenes and "
+      "separated runs that take different paths (a stiff solve or not) by "
+      "more than 1e-6 (measured with 2 updates a step).");
+    prm.declare_entry(
       "Self contact",
       "false",
       Bool(),
@@ -196,6 +214,8 @@ namespace hyperelastic
     operating_point = prm.get("Barrier stiffness rule") == "operating point";
     friction_smoothing       = get_finite(prm, "Contact", "Friction smoothing");
     friction_lagging_updates = prm.get_integer("Friction lagging updates");
+    friction_force_trigger =
+      prm.get("Friction lag trigger") == "friction force";
     self_contact             = prm.get_bool("Self contact");
     meshed_obstacle_corners  = prm.get_bool("Meshed obstacle corners");
     self_contact_friction =

@@ -31,7 +31,8 @@ namespace hyperelastic
       : obstacles(parameters.obstacles)
       , comm(dof_handler.get_communicator())
       , dynamic(dynamic)
-      , lagging(parameters.friction_lagging_updates)
+      , lagging(parameters.friction_lagging_updates,
+                parameters.friction_force_trigger)
   {
     for (const auto &o : obstacles)
       {
@@ -481,18 +482,38 @@ namespace hyperelastic
   {
     if (!has_friction() || !lagging.may_update())
       return LaggedUpdate::unchanged;
-    std::vector<Lagged> next        = lagged_at(u, clock.obstacle_time(t));
-    const double        since_start = clock.elapsed(t);
-    double              change = 0., largest = 0.;
-    for (unsigned int i = 0; i < next.size(); ++i)
+    const double              time  = clock.obstacle_time(t);
+    std::vector<Lagged>       next  = lagged_at(u, time);
+    const std::vector<Placed> where = placed(time);
+    const double              since_start = clock.elapsed(t);
+    const double              eps =
+      friction_smoothing(clock.end_time(t) - std::min(clock.step_start, t));
+    // The change of each vertex's friction force, mu (lambda_new - lambda)
+    // f1(|s|) along its slip s (in the new tangent plane where it is in
+    // contact now, else in the old).
+    FrictionLagging::Change change;
+    for (unsigned int a = 0; a < vertices.size(); ++a)
       {
-        change  = std::max(change,
-                          std::abs(next[i].normal_force -
-                                   lagged[i].normal_force_after(since_start)));
-        largest = std::max(largest, next[i].normal_force);
+        const Point<dim> x = position(a, u);
+        Tensor<1, dim>   force;
+        for (unsigned int k = 0; k < obstacles.size(); ++k)
+          {
+            const unsigned int i      = a * obstacles.size() + k;
+            const double       before = lagged[i].normal_force_after(since_start);
+            change.add_normal_force(before, next[i].normal_force);
+            if (!lagging.needs_friction_change() || !(eps > 0.) ||
+                next[i].normal_force == before)
+              continue;
+            const Lagged &l = next[i].normal_force > 0. ? next[i] : lagged[i];
+            const Tensor<1, dim>   s = slip(a, x, where[k], l);
+            const SmoothedFriction f = smoothed_friction(s.norm(), eps);
+            force += obstacles[k].friction * (next[i].normal_force - before) *
+                     f.f1_over_y * s;
+          }
+        change.friction_squared += force.norm_square();
       }
     return lagging.take_if_changed(
-      change, largest, {moment, unbalanced_force}, comm, lagged, next);
+      change, {moment, unbalanced_force}, comm, lagged, next);
   }
 
   template <int dim>

@@ -43,7 +43,8 @@ namespace hyperelastic
       , rank(Utilities::MPI::this_mpi_process(comm))
       , friction(parameters.self_contact_friction)
       , dynamic(dynamic)
-      , lagging(parameters.friction_lagging_updates)
+      , lagging(parameters.friction_lagging_updates,
+                parameters.friction_force_trigger)
   {
     build_faces(gather_vertices(dof_handler));
     // d_hat and kappa as for the obstacles, the automatic d_hat at most
@@ -357,25 +358,15 @@ namespace hyperelastic
     if (!(friction > 0.) || lagged.empty())
       return;
     Stopwatch    watch(spent.narrow);
-    const double h   = end_state.c * (t - std::min(step_start, t));
-    const double eps = dynamic ? eps_setting * h : eps_setting;
+    const double eps = friction_smoothing(t);
     if (!(eps > 0.))
       return; // no time has passed: no slip
     for (const Lagged &l : lagged)
       {
         Coordinates x, x0;
-        bool        known = true;
-        for (unsigned int i = 0; i < n_points; ++i)
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              x[i * dim + d]  = s.x[l.pair.v[i]][d];
-              x0[i * dim + d] = s.x0[l.pair.v[i]][d];
-              known           = known && !std::isnan(x[i * dim + d]) &&
-                      !std::isnan(x0[i * dim + d]);
-            }
         // A vertex that slid out of reach within the step: its pair has
         // left the contact.
-        if (!known)
+        if (!slip_coordinates(l.pair, s, x, x0))
           continue;
         PairBarrier<n_coordinates> b = pair_friction<dim>(
           x, x0, l.beta, l.normal, friction * l.normal_force, eps, order);
@@ -385,9 +376,35 @@ namespace hyperelastic
   }
 
   template <int dim>
+  double
+  SelfContact<dim>::friction_smoothing(const double t) const
+  {
+    const double h = end_state.c * (t - std::min(step_start, t));
+    return dynamic ? eps_setting * h : eps_setting;
+  }
+
+  template <int dim>
+  bool
+  SelfContact<dim>::slip_coordinates(const Pair  &pair,
+                                     const State &s,
+                                     Coordinates &x,
+                                     Coordinates &x0) const
+  {
+    for (unsigned int i = 0; i < n_points; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          x[i * dim + d]  = s.x[pair.v[i]][d];
+          x0[i * dim + d] = s.x0[pair.v[i]][d];
+          if (std::isnan(x[i * dim + d]) || std::isnan(x0[i * dim + d]))
+            return false;
+        }
+    return true;
+  }
+
+  template <int dim>
   LaggedUpdate
   SelfContact<dim>::update_lagged(const VectorType &u,
-                                  const double,
+                                  const double      t,
                                   const LagMoment moment,
                                   const double    unbalanced_force)
   {
@@ -398,27 +415,47 @@ namespace hyperelastic
         moment == LagMoment::predicted)
       return LaggedUpdate::unchanged;
     const auto          scope = timed_section(timer, "contact");
-    std::vector<Lagged> next  = lag(near_state(u));
-    // The largest change of a pair's normal force (pairs that appear or
-    // disappear change from or to 0).
+    const State         s     = near_state(u);
+    std::vector<Lagged> next  = lag(s);
+    const double        eps   = friction_smoothing(t);
+    // Each pair's change of normal force (pairs that appear or disappear
+    // change from or to 0) and of its friction force on its vertices,
+    // counted on the rank that owns its first vertex.
     std::map<std::array<unsigned int, n_points>, double> before;
     for (const Lagged &l : lagged)
       before[l.pair.v] = l.normal_force;
-    double change = 0., largest = 0.;
+    FrictionLagging::Change change;
+    const auto              add = [&](const Lagged &l, const double from) {
+      const unsigned int first = l.pair.v[0];
+      if (first < first_owned || first >= first_owned + n_owned)
+        return;
+      const double to = l.normal_force;
+      change.add_normal_force(from, to);
+      Coordinates x, x0;
+      if (!lagging.needs_friction_change() || !(eps > 0.) ||
+          !slip_coordinates(l.pair, s, x, x0))
+        return;
+      const PairBarrier<n_coordinates> b = pair_friction<dim>(
+        x, x0, l.beta, l.normal, friction * (to - from), eps, 1);
+      for (const double g : b.gradient)
+        change.friction_squared += g * g;
+    };
     for (const Lagged &l : next)
       {
-        largest = std::max(largest, l.normal_force);
         auto it = before.find(l.pair.v);
-        change  = std::max(change,
-                          std::abs(l.normal_force -
-                                   (it == before.end() ? 0. : it->second)));
+        add(l, it == before.end() ? 0. : it->second);
         if (it != before.end())
           before.erase(it);
       }
-    for (const auto &[pair, force] : before)
-      change = std::max(change, force);
+    for (const Lagged &l : lagged)
+      if (before.count(l.pair.v) > 0)
+        {
+          Lagged gone       = l;
+          gone.normal_force = 0.;
+          add(gone, l.normal_force);
+        }
     return lagging.take_if_changed(
-      change, largest, {moment, unbalanced_force}, comm, lagged, next);
+      change, {moment, unbalanced_force}, comm, lagged, next);
   }
 
   template <int dim>

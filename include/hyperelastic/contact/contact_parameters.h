@@ -61,6 +61,10 @@ namespace hyperelastic
     /// velocity); 0: automatic.
     double       friction_smoothing       = 0.;
     unsigned int friction_lagging_updates = 4;
+    /// 'Friction lag trigger = friction force': an update where the
+    /// assembled friction force changes (FrictionLagging), rather than
+    /// where any single pair's normal force does.
+    bool friction_force_trigger = false;
     /// Contact between parts of the body's boundary (and between bodies).
     bool self_contact = false;
     /// mu of the friction between parts of the boundary (self contact).

@@ -154,9 +154,9 @@ namespace hyperelastic
     }
 
     /// Friction: lags the normal forces, normals and closest points of the
-    /// active pairs at the converged @p u; true if a normal force changed
-    /// by more than 1e-3 of the largest (at most 'Friction lagging updates'
-    /// times a step).
+    /// active pairs at @p u; updated if the friction force they change is
+    /// more than FrictionLagging's tolerance (at most 'Friction lagging
+    /// updates' times a step).
     LaggedUpdate
     update_lagged(const VectorType &u,
                   double            t,
@@ -413,6 +413,19 @@ namespace hyperelastic
                       double       t,
                       unsigned int order,
                       const F     &f) const;
+
+    /// Friction's smoothing eps at time @p t of the step.
+    double
+    friction_smoothing(double t) const;
+
+    /// The positions @p x and step-start positions @p x0 of @p pair's
+    /// vertices in @p s; false if one is not known here (it slid out of
+    /// reach within the step).
+    bool
+    slip_coordinates(const Pair  &pair,
+                     const State &s,
+                     Coordinates &x,
+                     Coordinates &x0) const;
 
     /// The stencil of @p pair: its vertices' dofs, written by their owner;
     /// with @p prescribed (per vertex and component, NaN where free), the
