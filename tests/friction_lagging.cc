@@ -29,6 +29,7 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
 
 using namespace hyperelastic;
 
@@ -72,9 +73,7 @@ namespace
   std::function<double(unsigned int)>
   entering(const double lambda)
   {
-    return [lambda](const unsigned int i) {
-      return i < n_pairs ? 1. : lambda;
-    };
+    return [lambda](const unsigned int i) { return i < n_pairs ? 1. : lambda; };
   }
 
   std::function<double(unsigned int)>
@@ -98,88 +97,112 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                           comm = MPI_COMM_WORLD;
-  testing::Checker                         checker(
-    dealii::Utilities::MPI::this_mpi_process(comm) == 0);
+  testing::Checker checker(dealii::Utilities::MPI::this_mpi_process(comm) == 0);
   const FrictionLagging::Iterate converged{LagMoment::converged, 0.};
+  // Checks that @p lagging decides @p expected on the change from the
+  // slide to @p after (friction factor @p f1) taken at @p at.
+  const auto expect = [&](const std::string                         &what,
+                          FrictionLagging                           &lagging,
+                          const std::function<double(unsigned int)> &after,
+                          const double                               f1,
+                          const FrictionLagging::Iterate            &at,
+                          const bool                                 expected) {
+    checker.is_true(
+      what,
+      updated(lagging, change(sliding, after, f1, comm), at, comm) == expected);
+  };
 
   checker.section("'Friction lag trigger = single pair' (the default)");
   FrictionLagging per_pair(2, false);
   per_pair.begin_step();
-  checker.is_true("a pair entering at lambda = 0.002: updated",
-                  updated(per_pair,
-                          change(sliding, entering(0.002), 1., comm),
-                          converged,
-                          comm));
-  checker.is_true("a pair entering at lambda = 0.0005: unchanged",
-                  !updated(per_pair,
-                           change(sliding, entering(0.0005), 1., comm),
-                           converged,
-                           comm));
-  checker.is_true("every lambda up 1 % at f1 = 0: updated",
-                  updated(per_pair,
-                          change(sliding, scaled(1.01), 0., comm),
-                          converged,
-                          comm));
+  expect("a pair entering at lambda = 0.002: updated",
+         per_pair,
+         entering(0.002),
+         1.,
+         converged,
+         true);
+  expect("a pair entering at lambda = 0.0005: unchanged",
+         per_pair,
+         entering(0.0005),
+         1.,
+         converged,
+         false);
+  expect("every lambda up 1 % at f1 = 0: updated",
+         per_pair,
+         scaled(1.01),
+         0.,
+         converged,
+         true);
   checker.is_true("the budget spent", !per_pair.may_update());
 
   checker.section("'friction force': the assembled friction force");
   FrictionLagging lagging(2, true);
   lagging.begin_step();
-  checker.is_true("a pair entering at lambda = 0.02: unchanged",
-                  !updated(lagging,
-                           change(sliding, entering(0.02), 1., comm),
-                           converged,
-                           comm));
-  checker.is_true("a pair entering at lambda = 0.05: updated",
-                  updated(lagging,
-                          change(sliding, entering(0.05), 1., comm),
-                          converged,
-                          comm));
+  expect("a pair entering at lambda = 0.02: unchanged",
+         lagging,
+         entering(0.02),
+         1.,
+         converged,
+         false);
+  expect("a pair entering at lambda = 0.05: updated",
+         lagging,
+         entering(0.05),
+         1.,
+         converged,
+         true);
   checker.is_true("one update left", lagging.may_update());
 
   checker.section("the budget: 'Friction lagging updates' = 2 a step");
-  checker.is_true("every lambda up 1 %: updated",
-                  updated(lagging,
-                          change(sliding, scaled(1.01), 1., comm),
-                          converged,
-                          comm));
+  expect(
+    "every lambda up 1 %: updated", lagging, scaled(1.01), 1., converged, true);
   checker.is_true("the budget spent", !lagging.may_update());
   lagging.begin_step();
   checker.is_true("a new step may update again", lagging.may_update());
 
   checker.section("large updates apart from the budget");
   for (unsigned int k = 0; k < 2; ++k)
-    checker.is_true("every lambda tripled: updated",
-                    updated(lagging,
-                            change(sliding, scaled(3.), 1., comm),
-                            converged,
-                            comm));
+    expect("every lambda tripled: updated",
+           lagging,
+           scaled(3.),
+           1.,
+           converged,
+           true);
   checker.is_true("two large updates leave the budget whole",
                   lagging.may_update());
-  updated(lagging, change(sliding, scaled(3.), 1., comm), converged, comm);
+  expect("a third large one", lagging, scaled(3.), 1., converged, true);
   checker.is_true("a third large one is counted", lagging.may_update());
-  updated(lagging, change(sliding, scaled(3.), 1., comm), converged, comm);
+  expect("a fourth large one", lagging, scaled(3.), 1., converged, true);
   checker.is_true("and a fourth spends the budget", !lagging.may_update());
 
   checker.section("no slip, no friction force to change");
   lagging.begin_step();
-  checker.is_true("lambda halved at f1 = 0: unchanged",
-                  !updated(lagging,
-                           change(sliding, scaled(0.5), 0., comm),
-                           converged,
-                           comm));
+  expect("lambda halved at f1 = 0: unchanged",
+         lagging,
+         scaled(0.5),
+         0.,
+         converged,
+         false);
 
   checker.section("where the new values are taken");
-  const FrictionLagging::Change up = change(sliding, scaled(1.01), 1., comm);
-  checker.is_true(
-    "within the solve, unbalanced force 0.6 of the largest: unchanged",
-    !updated(lagging, up, {LagMoment::within_solve, 0.6 * 1.01}, comm));
-  checker.is_true(
-    "within the solve, unbalanced force 0.4 of the largest: updated",
-    updated(lagging, up, {LagMoment::within_solve, 0.4 * 1.01}, comm));
+  expect("within the solve, unbalanced force 0.6 of the largest: unchanged",
+         lagging,
+         scaled(1.01),
+         1.,
+         {LagMoment::within_solve, 0.6 * 1.01},
+         false);
+  expect("within the solve, unbalanced force 0.4 of the largest: updated",
+         lagging,
+         scaled(1.01),
+         1.,
+         {LagMoment::within_solve, 0.4 * 1.01},
+         true);
   for (unsigned int k = 0; k < 3; ++k)
-    checker.is_true("at a prediction: updated",
-                    updated(lagging, up, {LagMoment::predicted, 0.}, comm));
+    expect("at a prediction: updated",
+           lagging,
+           scaled(1.01),
+           1.,
+           {LagMoment::predicted, 0.},
+           true);
   checker.is_true("predictions not counted (one update left)",
                   lagging.may_update());
   return checker.exit_code();
