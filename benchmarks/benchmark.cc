@@ -47,7 +47,7 @@
 #include <deal.II/base/timer.h>
 
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 #include <hyperelastic/solvers/linear_solver.h>
 #include <hyperelastic/solvers/rigid_body_modes.h>
 #include <hyperelastic/solvers/two_level_preconditioner.h>

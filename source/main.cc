@@ -2,9 +2,9 @@
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/fit_command.h>
-#include <hyperelastic/parameters.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/commands/fit_command.h>
+#include <hyperelastic/scene/parameters.h>
+#include <hyperelastic/problem/problem.h>
 
 #include <iostream>
 #include <string>

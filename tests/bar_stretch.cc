@@ -16,7 +16,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/analytic_bar.h"
 #include "support/checker.h"

@@ -11,8 +11,8 @@
 //
 // Usage: mpirun -np N contact_krylov SCENE.prm BOUND
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/parameters.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/scene/parameters.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/checker.h"
 

@@ -23,8 +23,8 @@
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/parameters.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/scene/parameters.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/checker.h"
 

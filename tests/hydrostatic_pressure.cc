@@ -11,7 +11,7 @@
 // search and GMRES.
 //
 // Usage: mpirun -np N hydrostatic_pressure DIM
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/dimension_main.h"
 #include "support/scene_text.h"

@@ -12,7 +12,7 @@
 //     coarse to the fine mesh at a rate of at least 1.5.
 //
 // Usage: mpirun -np N inflation MESH_FOLDER
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/dimension_main.h"
 #include "support/radial_inflation.h"

@@ -22,7 +22,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/checker.h"
 #include "support/scene_text.h"

@@ -22,7 +22,7 @@
 #include <hyperelastic/mesh/mesh.h>
 #include <hyperelastic/mesh/mesh_checks.h>
 #include <hyperelastic/mesh/mesh_file.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/checker.h"
 #include "support/scene_run.h"

@@ -35,7 +35,7 @@
 #include <hyperelastic/mesh/gmsh_reader.h>
 #include <hyperelastic/mesh/mesh.h>
 #include <hyperelastic/mesh/mesh_distribution.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/checker.h"
 #include "support/dimension_main.h"

@@ -26,7 +26,7 @@
 // Usage: mpirun -np N mixed_formulation DIM
 #include <hyperelastic/assembly/elasticity_operator.h>
 #include <hyperelastic/assembly/mixed_assembler.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/analytic_bar.h"
 #include "support/box_discretisation.h"

@@ -24,7 +24,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/checker.h"
 #include "support/manufactured_motion.h" // rotation_matrix

@@ -21,7 +21,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/materials/material_registry.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/checker.h"
 #include "support/dimension_main.h"

@@ -10,7 +10,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/checker.h"
 #include "support/dimension_main.h"

@@ -1,4 +1,4 @@
-// Checkpoint and restart (issue 31; problem_checkpoint.cc,
+// Checkpoint and restart (issue 31; problem/checkpoint.cc,
 // output/checkpoint_file.h). A run is "killed" by a step observer that
 // throws after a given step (the CSV then holds rows past the checkpoint,
 // as after a real kill), restarted from its checkpoint, and its CSV and PVD

@@ -10,7 +10,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/calibration/fit_parameters.h>
-#include <hyperelastic/scene_fit.h>
+#include <hyperelastic/inverse/scene_fit.h>
 
 #include "support/checker.h"
 #include "support/scene_run.h"

@@ -33,7 +33,7 @@
 #include <hyperelastic/assembly/warped_assembler.h>
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/materials/material_registry.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/box_discretisation.h"
 #include "support/checker.h"

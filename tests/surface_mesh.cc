@@ -19,7 +19,7 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/mesh/surface_file.h>
 #include <hyperelastic/mesh/surface_mesher.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include "support/analytic_bar.h"
 #include "support/checker.h"

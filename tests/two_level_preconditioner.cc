@@ -17,7 +17,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 #include <hyperelastic/solvers/two_level_preconditioner.h>
 
 #include "support/checker.h"

@@ -26,7 +26,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/materials/material_registry.h>
-#include <hyperelastic/unloaded_shape.h>
+#include <hyperelastic/inverse/unloaded_shape.h>
 
 #include "support/checker.h"
 #include "support/radial_inflation.h"

@@ -12,7 +12,7 @@ the loaded annulus, its nodes fixed) the reference is sought by
   fixed point:  the backward-displacement iteration X <- X + w (x^ - x(X))
                 with Aitken relaxation, a whole forward solve (Newton in
                 load steps, as the program runs a scene) per iteration: the
-                method the program implements (source/unloaded_shape.cc);
+                method the program implements (source/inverse/unloaded_shape.cc);
   inverse:      the formulation of Govindjee and Mihalic: Cauchy
                 equilibrium on the fixed loaded mesh, the reference radii
                 R(r) the unknowns, one Newton solve (its tangent here by

@@ -1,6 +1,6 @@
 // The equilibrium system's part of a checkpoint: the last two converged
 // states, the driver's state and the materials' history.
-#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/equilibrium_system/equilibrium_system.h>
 
 namespace hyperelastic
 {

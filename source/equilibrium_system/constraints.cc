@@ -1,7 +1,7 @@
 // The equilibrium system's constraints beyond the Dirichlet conditions
 // (SystemConstraint), looped over where the equations pass them: a solve's
 // right-hand side and update, and the residuals and directions.
-#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/equilibrium_system/equilibrium_system.h>
 
 namespace hyperelastic
 {

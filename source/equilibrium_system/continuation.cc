@@ -3,7 +3,7 @@
 // arc length's corrector and the stiffness along the load path.
 #include <deal.II/base/mpi.h>
 
-#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/equilibrium_system/equilibrium_system.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // The equilibrium system's damping of snap sub-steps (DampedSystem): an
 // energy term of the operator on the lumped mass of unit density.
 #include <hyperelastic/dynamics/inertia.h>
-#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/equilibrium_system/equilibrium_system.h>
 
 namespace hyperelastic
 {

@@ -2,7 +2,7 @@
 // constraint increment extended at zero Poisson's ratio where the tangent's
 // own predictor would invert cells.
 #include <hyperelastic/assembly/rest_stiffness.h>
-#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/equilibrium_system/equilibrium_system.h>
 
 namespace hyperelastic
 {

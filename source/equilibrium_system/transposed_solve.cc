@@ -4,7 +4,7 @@
 // constrained unknowns but their diagonal, so its transpose is the
 // transpose of the free block with the same diagonal.
 #include <hyperelastic/base/linear_algebra.h>
-#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/equilibrium_system/equilibrium_system.h>
 
 #include <stdexcept>
 

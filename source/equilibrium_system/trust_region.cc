@@ -1,7 +1,7 @@
 // The equilibrium system's trust region (TrustRegionSystem): the
 // truncated CG's solve of the tangent's model and the probe for negative
 // curvature, both preconditioned by the tangent projected everywhere.
-#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/equilibrium_system/equilibrium_system.h>
 
 #include <cmath>
 #include <limits>

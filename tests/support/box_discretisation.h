@@ -16,7 +16,7 @@
 #include <hyperelastic/assembly/elasticity_operator.h>
 #include <hyperelastic/formulation/formulation_registry.h>
 #include <hyperelastic/mesh/mesh.h>
-#include <hyperelastic/parameters.h>
+#include <hyperelastic/scene/parameters.h>
 
 #include <set>
 #include <vector>

@@ -2,7 +2,7 @@
 // printing, and hands back the problem for its summaries and solution.
 #pragma once
 
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include <memory>
 #include <string>

@@ -19,8 +19,8 @@
 #include <deal.II/fe/fe.h>
 
 #include <hyperelastic/assembly/elasticity_operator.h>
-#include <hyperelastic/equilibrium_system.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/equilibrium_system/equilibrium_system.h>
+#include <hyperelastic/problem/problem.h>
 
 namespace hyperelastic
 {

@@ -22,13 +22,13 @@
 #include <hyperelastic/materials/material.h>
 #include <hyperelastic/mesh/boundary_regions.h>
 #include <hyperelastic/mesh/cell_regions.h>
-#include <hyperelastic/model.h>
+#include <hyperelastic/scene/model.h>
 #include <hyperelastic/output/output.h>
 #include <hyperelastic/output/step_postprocessor.h>
 #include <hyperelastic/output/step_reporter.h>
 #include <hyperelastic/output/step_summary.h>
 #include <hyperelastic/output/surface_writer.h>
-#include <hyperelastic/parameters.h>
+#include <hyperelastic/scene/parameters.h>
 #include <hyperelastic/solvers/linear_solver.h>
 #include <hyperelastic/solvers/newton_solver.h>
 
@@ -186,7 +186,7 @@ namespace hyperelastic
     /// observer): the derivatives of the CSV column reaction_<id>_<axis>
     /// with respect to the model's constants (in the order of its
     /// ConstantDerivatives) by the adjoint of the converged equilibrium
-    /// r(u, c) = 0 (source/problem_sensitivity.cc), in the displacement
+    /// r(u, c) = 0 (source/problem/sensitivity.cc), in the displacement
     /// (P1, P2) or the mixed formulation (every element). Empty where it
     /// does not apply: stiffness warping, contact, a non-symmetric tangent
     /// together with system constraints, a model without
@@ -235,7 +235,7 @@ namespace hyperelastic
     void
     write_fields(unsigned int step);
 
-    // Checkpoint and restart (problem_checkpoint.cc).
+    // Checkpoint and restart (problem/checkpoint.cc).
     /// What must match between a checkpoint and the scene that resumes
     /// it, one "name: value" per line.
     std::string

@@ -9,13 +9,13 @@
 #include <hyperelastic/assembly/assembly_tools.h>
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/dynamics/time_stepping.h>
-#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/equilibrium_system/equilibrium_system.h>
 #include <hyperelastic/formulation/formulation_registry.h>
 #include <hyperelastic/materials/region_properties.h>
 #include <hyperelastic/mesh/bodies.h>
 #include <hyperelastic/mesh/boundary_regions.h>
 #include <hyperelastic/mesh/mesh.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 #include <hyperelastic/solvers/rigid_body_modes.h>
 
 #include <chrono>

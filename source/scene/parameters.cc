@@ -7,8 +7,8 @@
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/formulation/formulation_registry.h>
-#include <hyperelastic/parameter_checks.h>
-#include <hyperelastic/parameters.h>
+#include <hyperelastic/scene/parameter_checks.h>
+#include <hyperelastic/scene/parameters.h>
 
 #include <fstream>
 #include <sstream>

@@ -8,7 +8,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <hyperelastic/assembly/assembly_tools.h>
-#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/equilibrium_system/equilibrium_system.h>
 #include <hyperelastic/output/inverted_cell_policy.h>
 
 #include <algorithm>

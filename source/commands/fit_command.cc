@@ -1,7 +1,7 @@
 // 'hyperelastic --fit' (see the header).
 #include <hyperelastic/calibration/run_fit.h>
-#include <hyperelastic/fit_command.h>
-#include <hyperelastic/scene_fit.h>
+#include <hyperelastic/commands/fit_command.h>
+#include <hyperelastic/inverse/scene_fit.h>
 
 namespace hyperelastic
 {

@@ -2,7 +2,7 @@
 // header).
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/materials/material_registry.h>
-#include <hyperelastic/parameter_checks.h>
+#include <hyperelastic/scene/parameter_checks.h>
 
 #include <string>
 

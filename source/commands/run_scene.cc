@@ -4,8 +4,8 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/problem.h>
-#include <hyperelastic/unloaded_shape.h>
+#include <hyperelastic/problem/problem.h>
+#include <hyperelastic/inverse/unloaded_shape.h>
 
 #include <iostream>
 

@@ -19,7 +19,7 @@
 #include <hyperelastic/mesh/boundary_regions.h>
 #include <hyperelastic/mesh/cell_regions.h>
 #include <hyperelastic/output/step_reporter.h>
-#include <hyperelastic/parameters.h>
+#include <hyperelastic/scene/parameters.h>
 
 #include <functional>
 #include <memory>

@@ -15,8 +15,8 @@
 // doc/manual.md, "The unloaded shape".
 #pragma once
 
-#include <hyperelastic/parameters.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/scene/parameters.h>
+#include <hyperelastic/problem/problem.h>
 
 #include <string>
 #include <vector>

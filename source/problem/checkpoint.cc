@@ -12,9 +12,9 @@
 // solve and go on alike.
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/dynamics/time_stepping.h>
-#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/equilibrium_system/equilibrium_system.h>
 #include <hyperelastic/output/checkpoint_file.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include <sstream>
 

@@ -4,9 +4,9 @@
 #include <deal.II/base/mpi.h>
 
 #include <hyperelastic/dynamics/time_stepping.h>
-#include <hyperelastic/equilibrium_system.h>
+#include <hyperelastic/equilibrium_system/equilibrium_system.h>
 #include <hyperelastic/materials/region_properties.h>
-#include <hyperelastic/problem.h>
+#include <hyperelastic/problem/problem.h>
 
 #include <chrono>
 #include <iomanip>

@@ -5,8 +5,8 @@
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/calibration/run_fit.h>
 #include <hyperelastic/materials/material_parameters.h>
-#include <hyperelastic/problem.h>
-#include <hyperelastic/scene_fit.h>
+#include <hyperelastic/problem/problem.h>
+#include <hyperelastic/inverse/scene_fit.h>
 
 #include <algorithm>
 #include <chrono>

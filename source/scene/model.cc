@@ -9,7 +9,7 @@
 #include <hyperelastic/materials/material_parameters.h>
 #include <hyperelastic/materials/region_properties.h>
 #include <hyperelastic/mesh/mesh.h>
-#include <hyperelastic/model.h>
+#include <hyperelastic/scene/model.h>
 
 namespace hyperelastic
 {

@@ -6,7 +6,7 @@
 #include <hyperelastic/assembly/assembly_tools.h>
 #include <hyperelastic/base/error_handling.h>
 #include <hyperelastic/base/parameter_tools.h>
-#include <hyperelastic/unloaded_shape.h>
+#include <hyperelastic/inverse/unloaded_shape.h>
 
 #include <array>
 #include <chrono>
