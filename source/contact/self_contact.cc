@@ -420,7 +420,11 @@ namespace hyperelastic
     const double        eps   = friction_smoothing(t);
     // Each pair's change of normal force (pairs that appear or disappear
     // change from or to 0) and of its friction force on its vertices,
-    // counted on the rank that owns its first vertex.
+    // counted on the rank that owns its first vertex. The friction forces'
+    // changes are summed in squares pair by pair, not assembled per vertex
+    // as the obstacles' are: pairs that share a vertex (a hand-over from a
+    // point-edge to a point-point pair) do not cancel, and the trigger is
+    // the stricter for it.
     std::map<std::array<unsigned int, n_points>, double> before;
     for (const Lagged &l : lagged)
       before[l.pair.v] = l.normal_force;
