@@ -21,7 +21,6 @@ namespace hyperelastic
                           const Parameters &parameters,
                           const MPI_Comm    comm)
     {
-      check_loaded_reference(parameters);
       dealii::ConditionalOStream pcout(
         std::cout, dealii::Utilities::MPI::this_mpi_process(comm) == 0);
       const UnloadedShape shape =

@@ -5,6 +5,7 @@
 
 #include <hyperelastic/assembly/assembly_tools.h>
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/mesh/gmsh_session.h>
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/inverse/unloaded_shape.h>
 
@@ -91,20 +92,6 @@ namespace hyperelastic
       });
       return Utilities::MPI::max(largest, dof_handler.get_communicator());
     }
-
-    /// gmsh's state for one writing, finalized however it ends.
-    struct GmshSession
-    {
-      GmshSession()
-      {
-        gmsh::initialize(0, nullptr, false);
-        gmsh::option::setNumber("General.Terminal", 0);
-      }
-      ~GmshSession()
-      {
-        gmsh::finalize();
-      }
-    };
 
     double
     seconds_since(const std::chrono::steady_clock::time_point start)
@@ -258,36 +245,6 @@ namespace hyperelastic
             "writing the reference mesh " + path + " failed (the gmsh API)";
         }
     throw_input_error_of_first_rank(problem_text, comm);
-  }
-
-  void
-  check_loaded_reference(const Parameters &parameters)
-  {
-    if (parameters.mesh.source != MeshSource::file ||
-        parameters.mesh.file.size() < 4 ||
-        parameters.mesh.file.substr(parameters.mesh.file.size() - 4) != ".msh")
-      reject("Problem/Reference",
-             "loaded",
-             "the loaded configuration must be a gmsh .msh mesh file "
-             "('Mesh/Source = file'), which the reference mesh is written "
-             "like");
-    if (parameters.contact.active())
-      reject("Problem/Reference",
-             "loaded",
-             "contact is not available with the search for the unloaded "
-             "shape (its gaps belong to the loaded configuration)");
-    if (parameters.mesh.global_refinements > 0)
-      reject("Problem/Reference",
-             "loaded",
-             "the loaded mesh is searched as it is in the file: 'Mesh/Global "
-             "refinements' must be 0 (the written reference would lose the "
-             "refined vertices)");
-    if (!parameters.restart_checkpoint.empty() ||
-        parameters.output.checkpoint_every > 0)
-      reject("Problem/Reference",
-             "loaded",
-             "checkpoints and restarts belong to one reference "
-             "configuration; the search runs one per iterate");
   }
 
   template UnloadedShape

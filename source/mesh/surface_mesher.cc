@@ -8,6 +8,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <hyperelastic/base/error_handling.h>
+#include <hyperelastic/mesh/gmsh_session.h>
 #include <hyperelastic/mesh/surface_mesher.h>
 
 #include <algorithm>
@@ -374,20 +375,6 @@ namespace hyperelastic
       return std::max(lower.distance(upper), 1e-300);
     }
 
-    /// gmsh's state for one meshing, finalized however it ends.
-    struct GmshSession
-    {
-      GmshSession()
-      {
-        gmsh::initialize(0, nullptr, false);
-        gmsh::option::setNumber("General.Terminal", 0);
-        gmsh::option::setNumber("General.NumThreads", 1);
-      }
-      ~GmshSession()
-      {
-        gmsh::finalize();
-      }
-    };
   } // namespace
 
   std::size_t

@@ -86,6 +86,11 @@ namespace hyperelastic
                        "': a restart continues load control or time "
                        "stepping; 'Load stepping/Method = arc length' is "
                        "not supported");
+    if (parameters.problem.reference_loaded)
+      throw InputError("--restart '" + file +
+                       "': a checkpoint belongs to one reference "
+                       "configuration; 'Problem/Reference = loaded' searches "
+                       "one per iterate and is not restarted");
     CheckpointParts parts = hyperelastic::read_checkpoint(file, comm);
     if (!parts.note.empty())
       pcout << "warning: " << parts.note << std::endl;

@@ -100,4 +100,37 @@ namespace hyperelastic
              "checkpoints continue load control or time stepping; 'Load "
              "stepping/Method = arc length' is not supported");
   }
+
+  void
+  check_loaded_reference(const ProblemParameters &problem,
+                         const MeshParameters    &mesh,
+                         const ContactParameters &contact,
+                         const OutputParameters  &output)
+  {
+    if (!problem.reference_loaded)
+      return;
+    if (mesh.source != MeshSource::file || mesh.file.size() < 4 ||
+        mesh.file.substr(mesh.file.size() - 4) != ".msh")
+      reject("Problem/Reference",
+             "loaded",
+             "the loaded configuration must be a gmsh .msh mesh file "
+             "('Mesh/Source = file'), which the reference mesh is written "
+             "like");
+    if (contact.active())
+      reject("Problem/Reference",
+             "loaded",
+             "contact is not available with the search for the unloaded "
+             "shape (its gaps belong to the loaded configuration)");
+    if (mesh.global_refinements > 0)
+      reject("Problem/Reference",
+             "loaded",
+             "the loaded mesh is searched as it is in the file: 'Mesh/Global "
+             "refinements' must be 0 (the written reference would lose the "
+             "refined vertices)");
+    if (output.checkpoint_every > 0)
+      reject("Problem/Reference",
+             "loaded",
+             "checkpoints belong to one reference configuration; the search "
+             "runs one per iterate");
+  }
 } // namespace hyperelastic

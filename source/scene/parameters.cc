@@ -87,6 +87,7 @@ namespace hyperelastic
       }
     check_arc_length(load_stepping, time_integration, contact, problem);
     check_checkpoints(output, load_stepping, time_integration);
+    check_loaded_reference(problem, mesh, contact, output);
     if (output.write_mesh)
       {
         if (mesh.source != MeshSource::surface)

@@ -61,9 +61,4 @@ namespace hyperelastic
                        const VectorType   &loaded,
                        const std::string  &mesh_file,
                        const std::string  &path);
-
-  /// The checks of a scene with 'Reference = loaded' (a gmsh .msh mesh
-  /// file, no contact): an InputError naming the entry otherwise.
-  void
-  check_loaded_reference(const Parameters &parameters);
 } // namespace hyperelastic

@@ -7,6 +7,7 @@
 #include <hyperelastic/dynamics/time_integration_parameters.h>
 #include <hyperelastic/formulation/formulation_parameters.h>
 #include <hyperelastic/materials/material_parameters.h>
+#include <hyperelastic/mesh/mesh_parameters.h>
 #include <hyperelastic/output/output_parameters.h>
 #include <hyperelastic/solvers/load_stepping_parameters.h>
 #include <hyperelastic/solvers/newton_parameters.h>
@@ -40,4 +41,14 @@ namespace hyperelastic
   check_checkpoints(const OutputParameters          &output,
                     const LoadSteppingParameters    &load_stepping,
                     const TimeIntegrationParameters &time_integration);
+
+  /// 'Problem/Reference = loaded' (the unloaded shape searched from a
+  /// loaded mesh): a gmsh .msh mesh file read as it is (no refinement), no
+  /// contact, no checkpoints. A restart is refused where it is read
+  /// (Problem::read_checkpoint).
+  void
+  check_loaded_reference(const ProblemParameters &problem,
+                         const MeshParameters    &mesh,
+                         const ContactParameters &contact,
+                         const OutputParameters  &output);
 } // namespace hyperelastic
