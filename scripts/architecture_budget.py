@@ -94,7 +94,27 @@ long_functions.blank_out, which keeps the line structure):
   code (comments and literals blanked) of identifiers containing 'contact',
   'friction', 'obstacle' or 'barrier' (case-insensitive), each occurrence
   once, plus the '#include <hyperelastic/contact/...>' lines. Target 0.
+
+- Physics interfaces (issue 68, item 5): every class under include/ that
+  declares a pure virtual function (an abstract base: Material,
+  Formulation, TimeStepping, Assembler, ...). '<Name> methods' counts the
+  virtual functions it introduces (those not declared override/final, the
+  destructor excluded; reported here only for the classes the capability
+  rows above do not already count) and '<Name> default bodies' those among
+  them with a '{...}' body instead of '= 0;'. The limits are in
+  INTERFACE_LIMITS (today's values); an interface not listed there gets
+  the limits 'new interface methods' (3) and 'new interface default
+  bodies' (0).
+
+- The house (issue 68, items 1 and 5): 'source/ top-level files' counts the
+  C++ files directly in source/ other than main.cc (limit 0: every unit
+  lives in the folder of its concern); 'include/hyperelastic top-level
+  headers' the headers directly in include/hyperelastic/ (limit 2: the
+  headers a user of the library includes first); 'GmshSession definitions'
+  the definitions ('class|struct GmshSession {') under source/ and include/
+  (limit 1: gmsh's global state has one owner, mesh/gmsh_session.h).
 """
+import functools
 import os
 import re
 import sys
@@ -133,7 +153,35 @@ LIMITS = {
     'includes from solvers/ into physics': 0,  # target 0 (issue 56): met
     # Contact names (and contact includes) in the core.
     'contact names in the core': 0,  # target 0 (issue 56): met
+    # An abstract class under include/ not in INTERFACE_LIMITS.
+    'new interface methods': 3,  # as a capability interface (issue 56)
+    'new interface default bodies': 0,  # target 0 (issue 68)
+    # C++ files directly in source/ besides main.cc.
+    'source/ top-level files': 0,  # target 0 (issue 68): met
+    # Headers directly in include/hyperelastic/.
+    'include/hyperelastic top-level headers': 2,  # target 2 (issue 68): met
+    # class/struct GmshSession definitions under source/ and include/.
+    'GmshSession definitions': 1,  # target 1 (issue 68): met
 }
+# The physics interfaces (abstract classes under include/): (methods,
+# default bodies), today's values. An interface missing here gets the
+# limits 'new interface methods' and 'new interface default bodies'.
+INTERFACE_LIMITS = {
+    'Material': (17, 10),
+    'Formulation': (9, 7),
+    'TimeStepping': (10, 5),
+    'Assembler': (7, 4),
+    'StepReporter': (4, 3),
+    'SteppedTerm': (5, 2),
+    'EnergyTerm': (5, 0),
+    'MovingAdmissibleSetTerm': (2, 0),
+    'CouplingTerm': (2, 0),
+    'SystemConstraint': (4, 0),
+    'ConstantDerivatives': (2, 0),
+    'GrowingMaterial': (2, 0),
+    'TangentPreconditioner': (3, 0),
+}
+NEW_INTERFACE = ('new interface methods', 'new interface default bodies')
 # An interface with no entry of its own in LIMITS gets this one.
 INTERFACE_DEFAULT = 'capability interface methods'
 # ---------------------------------------------------------------------------
@@ -310,8 +358,10 @@ class ClassInfo:
             kinds <= {'virtual', 'pure', 'destructor', 'type'}
 
 
+@functools.lru_cache(maxsize=None)
 def classes(path):
-    """Every class or struct defined in @p path (nested ones too)."""
+    """Every class or struct defined in @p path (nested ones too); the list
+    is shared between calls (read it, do not change it)."""
     raw = read(path)
     text = long_functions.blank_out(raw)
     raw_lines = raw.split('\n')
@@ -453,6 +503,85 @@ def contact_names():
     return rows
 
 
+def abstract_interfaces():
+    """[(class, introduced methods, default bodies)] for every class under
+    include/ that declares a pure virtual function, in file order."""
+    found = []
+    for path in files_under('include'):
+        for c in classes(path):
+            methods = c.methods()
+            if not any(kind == 'pure' for kind, _ in methods):
+                continue
+            introduced = [(kind, text) for kind, text in methods
+                          if not re.search(r'\)[^()]*\b(override|final)\b',
+                                           text)]
+            found.append((c, introduced,
+                          [text for kind, text in introduced
+                           if kind == 'virtual']))
+    return found
+
+
+def top_level_files(folder, keep):
+    """The C++ files directly in @p folder (not in its subfolders) other
+    than those named in @p keep."""
+    full = os.path.join(ROOT, folder)
+    if not os.path.isdir(full):
+        raise MeasureError(f'{folder} not found')
+    return sorted(f for f in os.listdir(full)
+                  if os.path.isfile(os.path.join(full, f)) and
+                  f.endswith(long_functions.EXTENSIONS) and f not in keep)
+
+
+def gmsh_sessions():
+    """(file, line) of every 'class|struct GmshSession' definition."""
+    rows = []
+    for path in files_under('source', 'include'):
+        text = long_functions.blank_out(read(path))
+        for match in re.finditer(r'\b(class|struct)\s+GmshSession\b[^;{]*\{',
+                                 text):
+            rows.append((rel(path), text.count('\n', 0, match.start()) + 1))
+    return rows
+
+
+def house_rows(details):
+    """The interface and layout rows of issue 68 (item 5)."""
+    rows = []
+    listed = set()
+    for c, introduced, defaults in abstract_interfaces():
+        if c.name in listed:
+            raise MeasureError(f'interface {c.name}: two definitions under '
+                               'include/')
+        listed.add(c.name)
+        methods, bodies = f'{c.name} methods', f'{c.name} default bodies'
+        if c.name in INTERFACE_LIMITS:
+            LIMITS[methods], LIMITS[bodies] = INTERFACE_LIMITS[c.name]
+        rows.append((methods, len(introduced),
+                     methods if methods in LIMITS else NEW_INTERFACE[0]))
+        rows.append((bodies, len(defaults),
+                     bodies if bodies in LIMITS else NEW_INTERFACE[1]))
+        details.append(f'{c.name} (interface; {rel(c.path)}:{c.line}):')
+        details += [f'  {"pure   " if kind == "pure" else "default"}  '
+                    f'{method_name(text)}' for kind, text in introduced]
+    for name in INTERFACE_LIMITS:
+        if name not in listed:
+            raise MeasureError(f'interface {name} (INTERFACE_LIMITS) is not '
+                               'found under include/: update the limits')
+    loose = top_level_files('source', ('main.cc',))
+    headers = top_level_files('include/hyperelastic', ())
+    sessions = gmsh_sessions()
+    rows.append(('source/ top-level files', len(loose),
+                 'source/ top-level files'))
+    rows.append(('include/hyperelastic top-level headers', len(headers),
+                 'include/hyperelastic top-level headers'))
+    rows.append(('GmshSession definitions', len(sessions),
+                 'GmshSession definitions'))
+    details.append('source/ top-level files: ' + (', '.join(loose) or '-'))
+    details.append('include/hyperelastic top-level headers: ' +
+                   (', '.join(headers) or '-'))
+    details += [f'GmshSession defined at {p}:{l}' for p, l in sessions]
+    return rows
+
+
 def measure():
     """[(metric, value, limit key)], and the details for --verbose."""
     rows, details = [], []
@@ -531,6 +660,10 @@ def measure():
         per_file[p] = per_file.get(p, 0) + 1
     details += [f'  {count:4d}  {p}' for p, count in per_file.items()]
     details += [f'  {p}:{l}  {word}' for p, l, word in contact]
+
+    # The capability rows above already count their interfaces' methods.
+    counted = {metric for metric, _, _ in rows}
+    rows += [row for row in house_rows(details) if row[0] not in counted]
     return rows, details
 
 

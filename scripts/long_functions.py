@@ -34,6 +34,7 @@ The heuristics (a scanner, not a C++ parser; good enough for this code base):
   before the header's first top-level '('; a lambda at namespace scope is
   listed as '<lambda>'.
 """
+import functools
 import os
 import re
 import sys
@@ -46,6 +47,7 @@ NON_FUNCTION = re.compile(r'^\s*(template\s*<[^{;]*>\s*)?'
                           r'(namespace|class|struct|union|enum|extern)\b')
 
 
+@functools.lru_cache(maxsize=None)
 def blank_out(text):
     """Comments, literals and preprocessor lines replaced by spaces (newlines
     kept, so that offsets and line numbers stay)."""
