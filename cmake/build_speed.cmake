@@ -74,3 +74,53 @@ function(hyperelastic_setup_target target)
     target_precompile_headers(${target} REUSE_FROM hyperelastic_core)
   endif()
 endfunction()
+
+# Unity builds (as ASPECT's ASPECT_UNITY_BUILD): the source files of each
+# folder of source/ (one concern each) compiled as one translation unit, so
+# that the templates, inline functions and vtables of the headers that the
+# folder's files share are instantiated and optimized once per folder rather
+# than once per file (about 5 s of every small unit's compile was that
+# repeated work). OFF compiles every file on its own (a clash of file-local
+# names across a folder shows only with ON: give such helpers distinct names).
+option(HYPERELASTIC_UNITY_BUILD
+  "Compile the files of each source/ folder as one translation unit" ON)
+
+# The files that stay units of their own: the second files of a class split
+# over two (its 'template class X<2>;' instantiates the members defined in
+# each file, and two of them in one unit are a duplicate instantiation).
+set(HYPERELASTIC_OWN_UNITS
+  source/contact/obstacle_geometry.cc
+  source/contact/mesh_obstacle_geometry.cc
+  source/contact/self_contact_boundary.cc
+  )
+
+# The folder whose unit does not use the precompiled headers, so that it
+# compiles on the second core during the minute the first precompiles them
+# (every other unit waits for them): the largest, mesh/ (about 2 minutes).
+set(HYPERELASTIC_UNIT_BESIDE_PCH mesh)
+
+# hyperelastic_unity_by_folder(<target> <source>...): <target>'s sources
+# grouped into one unity unit per folder (HYPERELASTIC_OWN_UNITS apart).
+function(hyperelastic_unity_by_folder target)
+  if(NOT HYPERELASTIC_UNITY_BUILD)
+    return()
+  endif()
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON
+    UNITY_BUILD_MODE GROUP)
+  foreach(source ${ARGN})
+    if(source IN_LIST HYPERELASTIC_OWN_UNITS)
+      set_source_files_properties(${source} TARGET_DIRECTORY ${target}
+        PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
+      continue()
+    endif()
+    get_filename_component(folder ${source} DIRECTORY)
+    get_filename_component(folder ${folder} NAME)
+    set_source_files_properties(${source} TARGET_DIRECTORY ${target}
+      PROPERTIES UNITY_GROUP ${folder})
+  endforeach()
+  # The unit that compiles while the headers are precompiled (CMake names
+  # a group's unit unity_<group>_cxx.cxx): it parses its headers itself.
+  set_source_files_properties(
+    ${CMAKE_CURRENT_BINARY_DIR}/CMakeFiles/${target}.dir/Unity/unity_${HYPERELASTIC_UNIT_BESIDE_PCH}_cxx.cxx
+    TARGET_DIRECTORY ${target} PROPERTIES SKIP_PRECOMPILE_HEADERS ON)
+endfunction()

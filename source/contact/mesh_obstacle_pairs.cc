@@ -23,8 +23,6 @@ namespace hyperelastic
 
   namespace
   {
-    /// Each pair keeps a tenth of its distance along a Newton direction.
-    constexpr double keep_fraction = 0.1;
   } // namespace
 
   template <int dim>
@@ -404,7 +402,7 @@ namespace hyperelastic
               body[i] >= 0 ? p[body[i]][d] : q[obstacle[i]][d];
         alpha = std::min(
           alpha,
-          additive_ccd<dim>(c, motion, pair.edge_edge, keep_fraction, alpha).t);
+          additive_ccd<dim>(c, motion, pair.edge_edge, ccd_keep_fraction, alpha).t);
       }
     return Utilities::MPI::min(alpha, comm);
   }

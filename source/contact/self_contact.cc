@@ -26,8 +26,6 @@ namespace hyperelastic
 
   namespace
   {
-    /// Each pair keeps a tenth of its distance along a Newton direction.
-    constexpr double keep_fraction = 0.1;
     /// The tangent's sparsity holds the couplings of the pairs within this
     /// many d_hat, so that a few iterates more fit in before it grows.
     constexpr double coupling_reach = 4.;
@@ -274,7 +272,7 @@ namespace hyperelastic
             q[i * dim + d] = p[pair.v[i]][d];
         alpha = std::min(
           alpha,
-          additive_ccd<dim>(c, q, pair.edge_edge, keep_fraction, alpha).t);
+          additive_ccd<dim>(c, q, pair.edge_edge, ccd_keep_fraction, alpha).t);
       }
     return Utilities::MPI::min(alpha, comm);
   }

@@ -22,6 +22,10 @@
 
 namespace hyperelastic
 {
+  /// The fraction of its distance that each pair keeps along a Newton
+  /// direction (the s of additive_ccd), for the obstacle and self contact.
+  constexpr double ccd_keep_fraction = 0.1;
+
   /// The result of one pair's CCD.
   struct CollisionTime
   {
