@@ -21,10 +21,6 @@ namespace hyperelastic
 {
   using namespace dealii;
 
-  namespace
-  {
-  } // namespace
-
   template <int dim>
   bool
   MeshObstaclePairs<dim>::wanted(const ContactParameters &parameters)
@@ -402,7 +398,9 @@ namespace hyperelastic
               body[i] >= 0 ? p[body[i]][d] : q[obstacle[i]][d];
         alpha = std::min(
           alpha,
-          additive_ccd<dim>(c, motion, pair.edge_edge, ccd_keep_fraction, alpha).t);
+          additive_ccd<dim>(
+            c, motion, pair.edge_edge, ccd_keep_fraction, alpha)
+            .t);
       }
     return Utilities::MPI::min(alpha, comm);
   }

@@ -272,7 +272,8 @@ namespace hyperelastic
             q[i * dim + d] = p[pair.v[i]][d];
         alpha = std::min(
           alpha,
-          additive_ccd<dim>(c, q, pair.edge_edge, ccd_keep_fraction, alpha).t);
+          additive_ccd<dim>(c, q, pair.edge_edge, ccd_keep_fraction, alpha)
+            .t);
       }
     return Utilities::MPI::min(alpha, comm);
   }

@@ -5,9 +5,9 @@
 
 #include <hyperelastic/assembly/assembly_tools.h>
 #include <hyperelastic/base/error_handling.h>
-#include <hyperelastic/mesh/gmsh_session.h>
 #include <hyperelastic/base/parameter_tools.h>
 #include <hyperelastic/inverse/unloaded_shape.h>
+#include <hyperelastic/mesh/gmsh_session.h>
 
 #include <array>
 #include <chrono>
