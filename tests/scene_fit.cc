@@ -80,6 +80,19 @@ main(int argc, char *argv[])
             forces.push_back(force[1]);
   check.is_true("the data's run landed on 0.3, 0.55, 0.8 and 1 exactly",
                 forces.size() == stops.size());
+  // Each step on a stop carries the stop's index (the fit reads its data
+  // points by it); the end, not in the list, and the steps between carry
+  // none.
+  unsigned int indexed = 0;
+  for (const auto &row : truth->summaries())
+    if (row.stop)
+      indexed += *row.stop < 3 && row.load_factor == stops[*row.stop];
+    else
+      check.is_true("no stop index at t = " + std::to_string(row.load_factor),
+                    row.load_factor != 0.3 && row.load_factor != 0.55 &&
+                      row.load_factor != 0.8);
+  check.is_true("the steps at 0.3, 0.55 and 0.8 indexed 0, 1 and 2",
+                indexed == 3);
   if (rank == 0)
     {
       std::ofstream csv(data);
@@ -95,6 +108,14 @@ main(int argc, char *argv[])
   calibration::FitParameters fit;
   fit.scene          = start_scene;
   fit.scene_column   = "reaction_4_y";
+  fit.scene_reaction = calibration::reaction_column(fit.scene_column);
+  check.is_true("reaction_4_y is the y force of boundary id 4",
+                fit.scene_reaction && fit.scene_reaction->boundary_id == 4 &&
+                  fit.scene_reaction->component == 1);
+  check.is_true("reaction_moment_4_z and reaction_4_w are no reactions",
+                !calibration::reaction_column("reaction_moment_4_z") &&
+                  !calibration::reaction_column("reaction_4_w") &&
+                  !calibration::reaction_column("reaction__y"));
   fit.free_constants = {"Shear modulus", "Bulk modulus"};
   fit.starts         = 1;
   fit.directory      = "output";

@@ -12,6 +12,25 @@ namespace hyperelastic
   {
     using namespace entry_patterns;
 
+    std::optional<ReactionColumn>
+    reaction_column(const std::string &column)
+    {
+      const std::string prefix = "reaction_";
+      const auto        last   = column.rfind('_');
+      if (column.rfind(prefix, 0) != 0 || last == std::string::npos ||
+          last + 2 != column.size() || last <= prefix.size())
+        return std::nullopt;
+      const std::string id = column.substr(prefix.size(), last - prefix.size());
+      const auto        axis = std::string("xyz").find(column.back());
+      if (id.find_first_not_of("0123456789") != std::string::npos ||
+          id.size() > 9 || axis == std::string::npos)
+        return std::nullopt;
+      ReactionColumn reaction;
+      reaction.boundary_id = std::stoi(id);
+      reaction.component   = axis;
+      return reaction;
+    }
+
     void
     FitParameters::declare(dealii::ParameterHandler &prm)
     {
@@ -200,6 +219,7 @@ namespace hyperelastic
                    "a fit through a scene needs its data");
           scene = path(scene);
           data.push_back(read_scene_data(path(scene_data), scene_column));
+          scene_reaction = reaction_column(scene_column);
           data.back().index = 1;
         }
       else if (!scene_data.empty())

@@ -46,7 +46,8 @@ namespace hyperelastic
                model_name,
                "is not a model of P(F): it "
                "cannot be fitted");
-      file_prony.weights = material.viscoelasticity.weights;
+      file_viscoelasticity = material.viscoelasticity;
+      file_prony.weights   = material.viscoelasticity.weights;
       file_prony.times   = material.viscoelasticity.relaxation_times;
       prm.enter_subsection("Material");
       prm.enter_subsection("Viscoelasticity");
@@ -279,26 +280,59 @@ namespace hyperelastic
       const std::vector<double>        &values,
       std::vector<std::vector<double>> &d) const
     {
+      const auto trial = parsed_trial(values, d);
+      return trial ? trial->factory.create<3>() : nullptr;
+    }
+
+    std::optional<MaterialParameters>
+    ModelConstants::parsed_trial(const std::vector<double>        &values,
+                                 std::vector<std::vector<double>> &d) const
+    {
       const PronySeries series = prony(values);
       for (unsigned int j = 0; j < series.weights.size(); ++j)
         if (!(series.weights[j] >= 0.) || !(series.times[j] > 0.) ||
             !std::isfinite(series.weights[j] + series.times[j]))
-          return nullptr;
+          return std::nullopt;
       if (!trial_handler)
         trial_handler = handler(values);
       else
         set_free(*trial_handler, values);
       try
         {
-          auto material = parsed(*trial_handler).factory.create<3>();
-          d             = chain(*trial_handler);
-          return material;
+          ++n_trial_parses;
+          MaterialParameters trial = parsed(*trial_handler);
+          d                        = chain(*trial_handler);
+          return trial;
         }
       catch (const InputError &)
         {
           trial_handler.reset();
-          return nullptr;
+          return std::nullopt;
         }
+    }
+
+    std::optional<MaterialParameters>
+    ModelConstants::parameters(const std::vector<double>        &values,
+                               std::vector<std::vector<double>> *d) const
+    {
+      std::vector<std::vector<double>> chain_here;
+      auto trial = parsed_trial(values, d ? *d : chain_here);
+      if (trial && !file_prony.weights.empty())
+        {
+          const PronySeries series               = prony(values);
+          trial->viscoelasticity                  = file_viscoelasticity;
+          trial->viscoelasticity.weights          = series.weights;
+          trial->viscoelasticity.relaxation_times = series.times;
+          trial->factory = MaterialFactory::of<Viscoelastic>(
+            ViscoelasticConstants{trial->factory, trial->viscoelasticity});
+        }
+      return trial;
+    }
+
+    unsigned int
+    ModelConstants::trial_parses() const
+    {
+      return n_trial_parses;
     }
 
     std::vector<std::vector<double>>

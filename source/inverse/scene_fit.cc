@@ -86,44 +86,39 @@ namespace hyperelastic
     class SceneRuns
     {
     public:
-      SceneRuns(const Parameters  &scene,
-                const TestData    &data,
-                const std::string &column,
-                const MPI_Comm     comm)
+      SceneRuns(const Parameters    &scene,
+                const TestData      &data,
+                const FitParameters &fit,
+                const MPI_Comm       comm)
           : scene(scene)
           , problem(scene, comm, false)
           , data(data)
-          , column(column)
+          , column(fit.scene_column)
+          , reaction(fit.scene_reaction)
       {
+        if (reaction && reaction->component >= dim)
+          reaction.reset();
       }
 
-      /// The column at the data's load factors with the Material block
-      /// @p block; false if a step failed. With @p adjoint (and a reaction
-      /// column), also the column's derivatives with respect to the model's
-      /// constants at each load factor (sensitivities(); empty where the
-      /// adjoint does not apply).
+      /// The column at the data's load factors (the scene's stops, in the
+      /// data's order) with the Material @p material; false if a step
+      /// failed. With @p adjoint (and a reaction column), also the
+      /// column's derivatives with respect to the model's constants at each
+      /// load factor (sensitivities(); empty where the adjoint does not
+      /// apply).
       bool
-      values(const std::string   &block,
-             std::vector<double> &out,
-             const bool           adjoint = false)
+      values(const MaterialParameters &material,
+             std::vector<double>      &out,
+             const bool                adjoint = false)
       {
-        dealii::ParameterHandler prm;
-        MaterialParameters::declare(prm);
-        prm.parse_input_from_string(block);
-        MaterialParameters material;
-        material.parse(prm);
         problem.rebuild_materials(material, scene.regions);
         ++runs;
-        derivatives.clear();
+        derivatives.assign(data.states.size(), {});
         problem.set_step_observer([&](const StepSummary<dim> &row) {
-          if (adjoint && reaction.axis < dim &&
-              std::find_if(data.states.begin(),
-                           data.states.end(),
-                           [&](const TestState &s) {
-                             return s.stretch_1 == row.load_factor;
-                           }) != data.states.end())
-            derivatives.push_back(
-              problem.reaction_sensitivities(reaction.id, reaction.axis));
+          if (adjoint && reaction && row.stop)
+            derivatives[*row.stop] =
+              problem.reaction_sensitivities(reaction->boundary_id,
+                                             reaction->component);
         });
         try
           {
@@ -133,12 +128,16 @@ namespace hyperelastic
           {
             return false;
           }
-        out.clear();
-        for (const TestState &state : data.states)
-          for (const StepSummary<dim> &row : problem.summaries())
-            if (row.load_factor == state.stretch_1)
-              out.push_back(value_of(row));
-        if (out.size() != data.states.size())
+        out.assign(data.states.size(), 0.);
+        std::vector<bool> landed(data.states.size(), false);
+        for (const StepSummary<dim> &row : problem.summaries())
+          if (row.stop)
+            {
+              out[*row.stop]    = value_of(row);
+              landed[*row.stop] = true;
+            }
+        if (std::count(landed.begin(), landed.end(), true) !=
+            long(landed.size()))
           throw std::logic_error("a scene run did not stop at every load "
                                  "factor of the data");
         return true;
@@ -154,50 +153,29 @@ namespace hyperelastic
         for (const std::vector<double> &d : derivatives)
           if (d.empty())
             return {};
-        return derivatives.size() == data.states.size()
-                 ? derivatives
-                 : std::vector<std::vector<double>>();
+        return derivatives;
       }
 
       /// Scene runs, and Jacobians the adjoint gave (for the summary).
       unsigned int runs = 0, adjoint_jacobians = 0;
 
     private:
-      /// A column reaction_<id>_<axis> (axis = dim: another column).
-      struct Reaction
-      {
-        dealii::types::boundary_id id   = 0;
-        unsigned int               axis = dim;
-      };
-
-      static Reaction
-      reaction_of(const std::string &column)
-      {
-        Reaction          r;
-        const std::string prefix = "reaction_";
-        const auto        last   = column.rfind('_');
-        if (column.rfind(prefix, 0) != 0 || last == std::string::npos ||
-            last + 2 != column.size() || last <= prefix.size())
-          return r;
-        const std::string id =
-          column.substr(prefix.size(), last - prefix.size());
-        if (id.find_first_not_of("0123456789") != std::string::npos)
-          return r;
-        r.id   = std::stoi(id);
-        r.axis = std::string("xyz").find(column.back());
-        return r;
-      }
-
       const Parameters                &scene;
       Problem<dim>                     problem;
       const TestData                  &data;
       const std::string                column;
-      const Reaction                   reaction = reaction_of(column);
+      std::optional<ReactionColumn>    reaction;
       std::vector<std::vector<double>> derivatives;
 
+      /// The column in @p row: a support's reaction by its boundary id and
+      /// component, any other column by its name.
       double
       value_of(const StepSummary<dim> &row) const
       {
+        if (reaction)
+          for (const auto &[id, force] : row.reactions)
+            if (id == reaction->boundary_id)
+              return force[reaction->component];
         std::string names;
         for (const SummaryColumn &c : row.columns())
           {
@@ -238,25 +216,19 @@ namespace hyperelastic
     {
       const auto at = [&](const std::vector<double> &values,
                           std::vector<double>       &out) {
-        if (!constants.material(values))
-          return false;
-        std::ostringstream block;
-        constants.write_material_block(block, values);
-        return runs.values(block.str(), out);
+        const auto material = constants.parameters(values);
+        return material && runs.values(*material, out);
       };
-      std::vector<double> centre;
-      if (!constants.material(x))
-        return false;
-      std::ostringstream block;
-      constants.write_material_block(block, x);
-      if (!runs.values(block.str(), centre, method != Gradient::differences))
+      std::vector<double>              centre;
+      std::vector<std::vector<double>> chain;
+      const auto material = constants.parameters(x, &chain);
+      if (!material ||
+          !runs.values(*material, centre, method != Gradient::differences))
         return false;
       r.resize(measured.size());
       for (unsigned int i = 0; i < measured.size(); ++i)
         r[i] = centre[i] - measured[i];
       J.assign(measured.size(), std::vector<double>(x.size(), 0.));
-      std::vector<std::vector<double>> chain;
-      constants.material_and_chain(x, chain);
       const auto adjoint = runs.sensitivities();
       if (!adjoint.empty() && adjoint[0].size() == chain.size() &&
           chain[0].size() == x.size())
@@ -310,7 +282,7 @@ namespace hyperelastic
       dealii::ParameterHandler prm;
       const auto               constants = scene_constants(parameters, prm);
       const TestData          &data      = parameters.data[0];
-      SceneRuns<dim>           runs(scene, data, parameters.scene_column, comm);
+      SceneRuns<dim>           runs(scene, data, parameters, comm);
       std::array<std::vector<std::vector<double>>, 2> J;
       std::vector<double>                             r;
       for (const Gradient method : {Gradient::adjoint, Gradient::differences})
@@ -336,7 +308,7 @@ namespace hyperelastic
       dealii::ParameterHandler prm;
       const auto               fitted    = scene_constants(parameters, prm);
       const ModelConstants    &constants = *fitted;
-      SceneRuns<dim>           runs(scene, data, parameters.scene_column, comm);
+      SceneRuns<dim>           runs(scene, data, parameters, comm);
       LeastSquaresProblem      problem;
       problem.evaluate = [&](const std::vector<double>        &x,
                              std::vector<double>              &r,
@@ -356,10 +328,8 @@ namespace hyperelastic
                          "fail for every start (check the starting "
                          "constants in the scene's Material subsection)");
       // The fitted scene once more: its summary is <Base name>_scene.csv.
-      std::ostringstream block;
-      constants.write_material_block(block, report.result.values);
       std::vector<double> values;
-      runs.values(block.str(), values);
+      runs.values(*constants.parameters(report.result.values), values);
       report.fitted       = {values};
       report.stretch_2    = {std::vector<double>(values.size(), 0.)};
       const auto material = constants.material(report.result.values);
@@ -377,7 +347,8 @@ namespace hyperelastic
                  : "by central differences of whole scene runs (the adjoint "
                    "needs a reaction column, no contact, no history and a "
                    "model with constant derivatives)")
-           << ", " << runs.runs << " scene runs in all";
+           << ", " << runs.runs << " scene runs in all ("
+           << constants.trial_parses() << " trial constants parsed)";
       report.notes = {note.str()};
       report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin)

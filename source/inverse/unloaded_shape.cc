@@ -201,9 +201,8 @@ namespace hyperelastic
           std::map<std::array<double, 3>, std::array<double, 3>> reference;
           for (const auto &rank : all)
             for (std::size_t i = 0; i + 6 <= rank.size(); i += 6)
-              reference[{rank[i], rank[i + 1], rank[i + 2]}] = {rank[i + 3],
-                                                                rank[i + 4],
-                                                                rank[i + 5]};
+              reference[{{rank[i], rank[i + 1], rank[i + 2]}}] = {
+                {rank[i + 3], rank[i + 4], rank[i + 5]}};
           const GmshSession session;
           gmsh::open(mesh_file);
           std::vector<std::size_t> tags;
@@ -212,9 +211,9 @@ namespace hyperelastic
           std::size_t matched = 0;
           for (std::size_t n = 0; n < tags.size(); ++n)
             {
-              const std::array<double, 3> x = {coordinates[3 * n],
-                                               coordinates[3 * n + 1],
-                                               coordinates[3 * n + 2]};
+              const std::array<double, 3> x = {{coordinates[3 * n],
+                                                coordinates[3 * n + 1],
+                                                coordinates[3 * n + 2]}};
               // A node of no cell (a geometry point) stays where it is.
               const auto found = reference.find(x);
               if (found == reference.end())

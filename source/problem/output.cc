@@ -150,6 +150,7 @@ namespace hyperelastic
     s.load_factor       = system->load_factor();
     s.load_increment    = step.increment;
     s.cut_backs         = step.cut_backs;
+    s.stop              = step.stop;
     s.newton_iterations = result.iterations();
     s.linear_iterations = result.linear_iterations();
     s.backtracks        = result.backtracks();

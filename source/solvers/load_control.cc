@@ -4,6 +4,7 @@
 #include <hyperelastic/solvers/snap_sequence.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -58,7 +59,9 @@ namespace hyperelastic
     step.smallest_increment = std::numeric_limits<double>::infinity();
     while (t < end)
       {
-        const double t_next = next_load_factor();
+        const Target target = next_target();
+        const double t_next = target.t;
+        step.stop           = target.stop;
         // The increment as halved and doubled, not t_next - t: summed load
         // factors carry round-off, and a cut-back to exactly 1/16 of the
         // nominal increment must compare as 1/16 (snap steps, the CSV). A
@@ -85,18 +88,25 @@ namespace hyperelastic
       }
   }
 
-  double
-  LoadControlLoop::next_load_factor() const
+  LoadControlLoop::Target
+  LoadControlLoop::next_target() const
   {
     // Land exactly on t = end (no sliver of a last step): a remainder
     // below a millionth of the nominal step is the round-off of the summed
     // steps (500 steps of 0.02 end at 9.99999999999988, and a last step of
     // 1.2e-13 would follow: issue 41). The same for each stop.
-    const double sliver = 1e-6 * nominal;
-    for (const double stop : parameters.stops)
-      if (stop > t + sliver && stop < end && t + increment > stop - sliver)
-        return stop;
-    return t + increment > end - sliver ? end : t + increment;
+    const double               sliver = 1e-6 * nominal;
+    const std::vector<double> &stops  = parameters.stops;
+    for (unsigned int k = 0; k < stops.size(); ++k)
+      if (stops[k] > t + sliver && stops[k] < end &&
+          t + increment > stops[k] - sliver)
+        return {stops[k], k};
+    if (t + increment <= end - sliver)
+      return {t + increment, std::nullopt};
+    for (unsigned int k = 0; k < stops.size(); ++k)
+      if (std::abs(stops[k] - end) <= sliver)
+        return {end, k};
+    return {end, std::nullopt};
   }
 
   bool

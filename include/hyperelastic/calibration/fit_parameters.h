@@ -12,9 +12,11 @@
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
 
 #include <hyperelastic/calibration/test_data.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,18 @@ namespace hyperelastic
 {
   namespace calibration
   {
+    /// A CSV column reaction_<id>_<x|y|z>: the support's boundary id and
+    /// the component of its force.
+    struct ReactionColumn
+    {
+      dealii::types::boundary_id boundary_id = 0;
+      unsigned int               component   = 0;
+    };
+
+    /// @p column read as a reaction column; none for any other column.
+    std::optional<ReactionColumn>
+    reaction_column(const std::string &column);
+
     struct FitParameters
     {
       static constexpr unsigned int max_data_sets = 8;
@@ -32,8 +46,10 @@ namespace hyperelastic
       double                   stability_lowest  = 0.1;
       double                   stability_highest = 10.;
       std::vector<TestData>    data;
-      /// A fit through a scene: its file, and the data's column.
-      std::string scene, scene_column;
+      /// A fit through a scene: its file, and the data's column (read once
+      /// into scene_reaction where it is a support's reaction).
+      std::string                   scene, scene_column;
+      std::optional<ReactionColumn> scene_reaction;
       std::string directory, base_name;
 
       /// Declares Material, Output (Directory, Base name) and Fit.

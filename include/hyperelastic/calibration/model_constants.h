@@ -10,8 +10,11 @@
 // the file's Material subsection and parsed by MaterialParameters, so the
 // model built is exactly the one a scene with these entries builds, and a
 // value the model rejects (a negative modulus, Ogden's mu alpha <= 0) is
-// inadmissible for the fit. The model built is the equilibrium (long-term)
-// one; the Prony series comes separately (prony()). The derivatives of the
+// inadmissible for the fit; that parse is the only one a trial costs, and
+// its MaterialParameters go to a scene as they are (parameters(): numbers
+// in, numbers out, no block of text written and read again). material() is
+// the equilibrium (long-term) model; the Prony series comes separately
+// (prony()), and parameters() wraps it around the equilibrium model. The derivatives of the
 // stress with respect to the free entries are the model's
 // ConstantDerivatives, converted from (mu, lambda) to the selected pair for
 // the Lame-based models (chain()).
@@ -23,8 +26,10 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <hyperelastic/materials/material.h>
+#include <hyperelastic/materials/material_parameters.h>
 
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -77,6 +82,19 @@ namespace hyperelastic
       material_and_chain(const std::vector<double>        &values,
                          std::vector<std::vector<double>> &d) const;
 
+      /// The scene's Material at @p values, as a scene with these entries
+      /// parses it (the Prony series at @p values wrapped around the
+      /// equilibrium model); none where material() would be null. With
+      /// @p d, also material_and_chain()'s chain.
+      std::optional<MaterialParameters>
+      parameters(const std::vector<double>        &values,
+                 std::vector<std::vector<double>> *d = nullptr) const;
+
+      /// The trial sets of values parsed so far (each one parse of the
+      /// trial handler: what a trial costs in text).
+      unsigned int
+      trial_parses() const;
+
       /// The Prony series at @p values (empty without viscoelasticity).
       PronySeries
       prony(const std::vector<double> &values) const;
@@ -114,8 +132,10 @@ namespace hyperelastic
       /// The volumetric entry's text in the file, and a finite stand-in
       /// when it is 'inf' (incompressible fits: J = 1 leaves it idle).
       std::string volumetric_text, volumetric_stand_in;
-      /// The file's Prony series and duration text; the free columns.
-      PronySeries      file_prony;
+      /// The file's Prony series and duration text, its parsed
+      /// viscoelasticity entries; the free columns.
+      PronySeries            file_prony;
+      ViscoelasticParameters file_viscoelasticity;
       std::string      duration_text;
       std::vector<int> weight_column, time_column;
 
@@ -133,6 +153,12 @@ namespace hyperelastic
       /// handler() once and reused, since each trial sets every free entry;
       /// dropped when a rejected trial leaves it inside a subsection.
       mutable std::unique_ptr<dealii::ParameterHandler> trial_handler;
+      mutable unsigned int                              n_trial_parses = 0;
+      /// The trial handler at @p values parsed (null: rejected), and the
+      /// chain into @p d.
+      std::optional<MaterialParameters>
+      parsed_trial(const std::vector<double>        &values,
+                   std::vector<std::vector<double>> &d) const;
       /// Writes the model's free entries at @p values into @p prm, and the
       /// volumetric stand-in.
       void

@@ -4,7 +4,11 @@
 // load factors. The scene is built once and run with each trial set of
 // constants on the same mesh (Problem::rebuild_materials); its load steps
 // land exactly on the data's load factors ('Load stepping/Stop at load
-// factors'), cut-backs or not. Levenberg-Marquardt as for homogeneous tests
+// factors'), cut-backs or not, and each data point is read from the step
+// that carries its stop's index (StepSummary::stop). A trial's constants go
+// to the built scene as numbers (ModelConstants::parameters(): one parse a
+// trial, no text written and read back), and a reaction column is read by
+// its boundary id and component (FitParameters::scene_reaction). Levenberg-Marquardt as for homogeneous tests
 // (calibration/material_fit.h), with the Jacobian from the adjoint of the
 // converged equilibria, or from central differences
 // where the adjoint does not apply (2 runs per free constant and

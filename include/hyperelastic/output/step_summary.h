@@ -46,6 +46,9 @@ namespace hyperelastic
     double       load_factor       = 0.;
     double       load_increment    = 0.;
     unsigned int cut_backs         = 0; ///< failed attempts before this step
+    /// The index of the stop ('Load stepping/Stop at load factors') the
+    /// step landed on, if any (LoadStep::stop; not a CSV column).
+    std::optional<unsigned int> stop;
     unsigned int newton_iterations = 0;
     unsigned int linear_iterations = 0;
     unsigned int backtracks        = 0; ///< rejected line-search trials

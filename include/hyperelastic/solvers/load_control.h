@@ -22,6 +22,7 @@
 #include <hyperelastic/solvers/load_stepping.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,9 +60,15 @@ namespace hyperelastic
 
     /// The next step's end: t + increment, or the end or the next stop
     /// ('Load stepping/Stop at load factors') that it would pass or nearly
-    /// reach.
-    double
-    next_load_factor() const;
+    /// reach; with the index of the stop it lands on (a stop at the end
+    /// too).
+    struct Target
+    {
+      double                      t;
+      std::optional<unsigned int> stop;
+    };
+    Target
+    next_target() const;
 
     /// One attempt from the last converged state to @p t_next (increment
     /// @p attempted): Newton's solve, a snap step's with its sub-steps.

@@ -14,6 +14,7 @@
 #include <hyperelastic/solvers/tangent_system.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace hyperelastic
@@ -70,6 +71,10 @@ namespace hyperelastic
     /// Failed attempts (each followed by halving the increment) before this
     /// step converged.
     unsigned int cut_backs = 0;
+    /// Where the step landed on a stop of 'Load stepping/Stop at load
+    /// factors': its index in that list (none between stops). Readers find
+    /// their load factors by it, not by comparing doubles.
+    std::optional<unsigned int> stop;
     /// The stepper's state after this step (a checkpoint resumes from it).
     double       next_increment = 0.;
     unsigned int easy_steps     = 0; ///< easy steps in a row
