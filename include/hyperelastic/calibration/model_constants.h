@@ -14,10 +14,10 @@
 // its MaterialParameters go to a scene as they are (parameters(): numbers
 // in, numbers out, no block of text written and read again). material() is
 // the equilibrium (long-term) model; the Prony series comes separately
-// (prony()), and parameters() wraps it around the equilibrium model. The derivatives of the
-// stress with respect to the free entries are the model's
-// ConstantDerivatives, converted from (mu, lambda) to the selected pair for
-// the Lame-based models (chain()).
+// (prony()), and parameters() wraps it around the equilibrium model. The
+// derivatives of the stress with respect to the free entries are the
+// model's ConstantDerivatives, converted from (mu, lambda) to the selected
+// pair for the Lame-based models (chain()).
 //
 // The values of a fit: the model's free entries first, then the free
 // weights, then the free relaxation times.

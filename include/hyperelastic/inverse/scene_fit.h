@@ -8,11 +8,11 @@
 // that carries its stop's index (StepSummary::stop). A trial's constants go
 // to the built scene as numbers (ModelConstants::parameters(): one parse a
 // trial, no text written and read back), and a reaction column is read by
-// its boundary id and component (FitParameters::scene_reaction). Levenberg-Marquardt as for homogeneous tests
-// (calibration/material_fit.h), with the Jacobian from the adjoint of the
-// converged equilibria, or from central differences
-// where the adjoint does not apply (2 runs per free constant and
-// iteration); the summary says which. The adjoint (Problem::
+// its boundary id and component (FitParameters::scene_reaction).
+// Levenberg-Marquardt as for homogeneous tests (calibration/material_fit.h),
+// with the Jacobian from the adjoint of the converged equilibria, or from
+// central differences where the adjoint does not apply (2 runs per free
+// constant and iteration); the summary says which. The adjoint (Problem::
 // reaction_sensitivities()) takes one solve per data point with the
 // converged tangent (its transpose where follower loads make it
 // non-symmetric), for a reaction column of a scene without contact, in the
